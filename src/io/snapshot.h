@@ -1,0 +1,40 @@
+/* snapshot: particle fields to HDF5 files (design §5) and the XDMF index ParaView opens. */
+#ifndef VCSPH_SNAPSHOT_H
+#define VCSPH_SNAPSHOT_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+typedef enum { FIELD_DOUBLE, FIELD_INT64, FIELD_INT32 } field_type;
+
+/* One dataset: n rows of ncomp components. Components are separate arrays (SoA); the file
+ * stores them interleaved as an n x ncomp dataset (n when ncomp == 1). */
+typedef struct {
+    const char *name;
+    field_type type;
+    int ncomp;                /* 1, or dim for vectors */
+    const void *component[3]; /* ncomp pointers to n values each */
+} snapshot_field;
+
+typedef struct {
+    double time;
+    long step;
+    double eta;
+    int dim;
+    double dr, h;
+    const char *case_text; /* the resolved case.ini */
+} snapshot_attrs;
+
+/* Writes one snapshot file (atomically: temporary file, then rename). The field named
+ * "position" (ncomp = dim) is the geometry. Returns 0, or -1 with a message in err. */
+int snapshot_write(const char *path, size_t n, const snapshot_field *fields, int n_fields,
+                   const snapshot_attrs *attrs, char *err, size_t err_len);
+
+/* Writes (atomically) the XDMF temporal collection `xmf_path` that lists the snapshot files
+ * `files[k]` (paths relative to the XDMF file's folder) at times `times[k]` with particle
+ * counts `counts[k]`; every file holds the same fields. */
+int snapshot_write_xdmf(const char *xmf_path, int n_snapshots, const char *const *files,
+                        const double *times, const size_t *counts, const snapshot_field *fields,
+                        int n_fields, int dim, char *err, size_t err_len);
+
+#endif
