@@ -75,8 +75,11 @@ int config_load_string(config *cfg, const char *text, const char *origin,
  * that config_load reads back to the same struct. */
 void config_write(const config *cfg, FILE *out);
 
+/* The spellings of the case file (design §3), e.g. "delta-plus-ale", "with-eta0". */
 const char *config_scheme_name(scheme_kind s);
 const char *config_motion_name(motion_kind m);
 const char *config_edbc_name(edbc_mode e);
+const char *config_eta_control_name(eta_control_kind e);
+const char *config_wall_name(wall_kind w);
 
 #endif

@@ -25,6 +25,13 @@ typedef struct {
     const char *case_text; /* the resolved case.ini */
 } snapshot_attrs;
 
+/* Besides one dataset per field, every snapshot file holds this dataset: the row numbers
+ * 0 .. n-1 (int32, or int64 when n exceeds INT32_MAX), which the XDMF index uses as the
+ * Polyvertex connectivity. ParaView's XDMF3 reader makes vertex cells only from explicit
+ * connectivity; without them the particles are points with no cells, which the Surface and
+ * Points representations do not draw. Readers of the physical fields can ignore it. */
+#define SNAPSHOT_VERTICES_DATASET "xdmf_vertices"
+
 /* Writes one snapshot file (atomically: temporary file, then rename). The field named
  * "position" (ncomp = dim) is the geometry. Returns 0, or -1 with a message in err. */
 int snapshot_write(const char *path, size_t n, const snapshot_field *fields, int n_fields,

@@ -1,0 +1,43 @@
+# vcsph: a thin wrapper around CMake (design §6).
+BUILD ?= build
+ASAN_BUILD ?= build-asan
+JOBS ?= $(shell nproc)
+CASE ?= cases/default.ini
+RUN_DIR ?= out/default
+
+.PHONY: all deps build run test sanitize bench clean
+
+all: build
+
+deps:
+	@tools/install-deps
+
+$(BUILD)/CMakeCache.txt:
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_FLAGS)
+
+build: $(BUILD)/CMakeCache.txt
+	cmake --build $(BUILD) -j $(JOBS)
+
+# The default case: a short sloshing run, then plots of its time series.
+run: deps
+	@$(MAKE) --no-print-directory build
+	$(BUILD)/vcsph run $(CASE) -o $(RUN_DIR)
+	@tools/plot-run $(RUN_DIR)
+	@echo "vcsph: output in $(RUN_DIR) (open $(RUN_DIR)/snapshots.xmf in ParaView; plots in $(RUN_DIR)/images)"
+
+test: deps
+	@$(MAKE) --no-print-directory build
+	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
+
+# The same tests under AddressSanitizer + UndefinedBehaviorSanitizer, warnings as errors.
+sanitize: deps
+	cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=Debug -DVCSPH_SANITIZE=ON -DVCSPH_WERROR=ON
+	cmake --build $(ASAN_BUILD) -j $(JOBS)
+	ctest --test-dir $(ASAN_BUILD) --output-on-failure -j $(JOBS) -LE slow
+
+bench: deps
+	@$(MAKE) --no-print-directory build
+	$(BUILD)/bench_step
+
+clean:
+	rm -rf $(BUILD) $(ASAN_BUILD)

@@ -1,0 +1,92 @@
+/* cli: argument parsing. */
+#include "app/cli.h"
+
+#include <stdio.h>
+#include <string.h>
+
+void cli_usage(FILE *out)
+{
+    fputs("usage: vcsph run CASE [--set section.key=value]... [-o DIR] [--quiet]\n"
+          "       vcsph check CASE [--set section.key=value]...\n"
+          "       vcsph --help | --version\n"
+          "\n"
+          "  run     run the case; outputs go to output.dir of the case (default out/<name>)\n"
+          "  check   validate the case and print the derived numbers; runs nothing\n"
+          "  --set   override any key of the case file (repeatable)\n"
+          "  -o DIR  output directory\n"
+          "  --quiet no terminal output (log.txt is still written)\n"
+          "Threads: OMP_NUM_THREADS. Exit status: 0 done, 1 I/O failure, 2 bad input,\n"
+          "3 numerical breakdown.\n",
+          out);
+}
+
+static int take_value(int argc, char **argv, int *k, const char **value, char *err, int err_len)
+{
+    const char *opt = argv[*k];
+    const char *eq = strchr(opt, '=');
+    if (strncmp(opt, "--", 2) == 0 && eq) { /* --set=a.b=c */
+        *value = eq + 1;
+        return 0;
+    }
+    if (*k + 1 >= argc) {
+        snprintf(err, (size_t)err_len, "vcsph: option %s needs a value", opt);
+        return 2;
+    }
+    *value = argv[++*k];
+    return 0;
+}
+
+int cli_parse(int argc, char **argv, cli_args *args, char *err, int err_len)
+{
+    memset(args, 0, sizeof *args);
+    if (argc < 2) {
+        snprintf(err, (size_t)err_len, "vcsph: missing command (run or check); try vcsph --help");
+        return 2;
+    }
+    const char *cmd = argv[1];
+    if (!strcmp(cmd, "--help") || !strcmp(cmd, "-h") || !strcmp(cmd, "help")) {
+        args->command = CLI_HELP;
+        return 0;
+    }
+    if (!strcmp(cmd, "--version")) {
+        args->command = CLI_VERSION;
+        return 0;
+    }
+    if (!strcmp(cmd, "run")) args->command = CLI_RUN;
+    else if (!strcmp(cmd, "check")) args->command = CLI_CHECK;
+    else {
+        snprintf(err, (size_t)err_len, "vcsph: unknown command '%s' (allowed: run, check)", cmd);
+        return 2;
+    }
+    for (int k = 2; k < argc; k++) {
+        const char *a = argv[k], *value;
+        if (!strncmp(a, "--set", 5) && (a[5] == '\0' || a[5] == '=')) {
+            if (take_value(argc, argv, &k, &value, err, err_len)) return 2;
+            if (args->n_overrides == CLI_MAX_OVERRIDES) {
+                snprintf(err, (size_t)err_len, "vcsph: at most %d --set options", CLI_MAX_OVERRIDES);
+                return 2;
+            }
+            args->overrides[args->n_overrides++] = value;
+        } else if (!strcmp(a, "-o") || !strncmp(a, "--output", 8)) {
+            if (take_value(argc, argv, &k, &value, err, err_len)) return 2;
+            args->output_dir = value;
+        } else if (!strcmp(a, "--quiet") || !strcmp(a, "-q")) {
+            args->quiet = true;
+        } else if (a[0] == '-') {
+            snprintf(err, (size_t)err_len,
+                     "vcsph: unknown option '%s' (allowed: --set, -o, --quiet)", a);
+            return 2;
+        } else if (!args->case_path) {
+            args->case_path = a;
+        } else {
+            snprintf(err, (size_t)err_len, "vcsph: more than one case file ('%s' and '%s')",
+                     args->case_path, a);
+            return 2;
+        }
+    }
+    if (!args->case_path) {
+        snprintf(err, (size_t)err_len, "vcsph %s: missing the case file", cmd);
+        return 2;
+    }
+    return 0;
+}

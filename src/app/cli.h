@@ -1,0 +1,25 @@
+/* cli: the command line (design §1). */
+#ifndef VCSPH_CLI_H
+#define VCSPH_CLI_H
+
+#include <stdbool.h>
+#include <stdio.h>
+
+#define CLI_MAX_OVERRIDES 64
+
+typedef enum { CLI_RUN, CLI_CHECK, CLI_HELP, CLI_VERSION } cli_command;
+
+typedef struct {
+    cli_command command;
+    const char *case_path;
+    const char *overrides[CLI_MAX_OVERRIDES]; /* "section.key=value" from --set */
+    int n_overrides;
+    const char *output_dir;                   /* -o, NULL: output.dir of the case */
+    bool quiet;
+} cli_args;
+
+/* Parses argv; returns 0, or 2 with a message in err. */
+int cli_parse(int argc, char **argv, cli_args *args, char *err, int err_len);
+void cli_usage(FILE *out);
+
+#endif

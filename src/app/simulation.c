@@ -1,0 +1,311 @@
+/* simulation: the time loop and its outputs (design §1, §4, §5). */
+#include "app/simulation.h"
+#include "app/progress.h"
+#include "core/log.h"
+#include "diag/energy.h"
+#include "diag/health.h"
+#include "io/csv.h"
+#include "io/snapshot.h"
+#include "scheme/solver.h"
+
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#define simulation_run_dim DIM_NAME(simulation_run)
+
+static const char timeseries_header[] =
+    "t,step,dt,n_fluid,eps_v1,eps_v2,eps_v3,eps_gm,eps_sph,mass_err,eta,edbc,n_edbc,"
+    "n_free_surface,ekin,epot,eint,work_in,ediss,com_x,com_y,com_z,xmin,xmax,ymax,umax,"
+    "rho_min,rho_max";
+
+typedef struct {
+    solver s;
+    const config *cfg;
+    const run_options *opt;
+    char *case_text;         /* resolved case.ini, also stored in every snapshot */
+    csv_file timeseries, events;
+    double energy0;          /* ekin + epot + eint at t = 0 */
+    double mass0, v0;
+    double next_series, next_snapshot;
+    /* snapshot index for the XDMF file */
+    int n_snapshots, cap_snapshots;
+    char **snapshot_files;
+    double *snapshot_times;
+    size_t *snapshot_counts;
+    int speed_warned;        /* U_max > c0/10 reported and not yet back below */
+    progress pr;
+} run;
+
+static int make_dir(const char *path)
+{
+    char buf[CONFIG_PATH_MAX + 32];
+    snprintf(buf, sizeof buf, "%s", path);
+    for (char *q = buf + 1; *q; q++) {
+        if (*q != '/') continue;
+        *q = '\0';
+        if (mkdir(buf, 0777) && errno != EEXIST) return -1;
+        *q = '/';
+    }
+    return mkdir(buf, 0777) && errno != EEXIST ? -1 : 0;
+}
+
+static void out_path(const run *r, char *buf, size_t len, const char *name)
+{
+    snprintf(buf, len, "%s/%s", r->opt->output_dir, name);
+}
+
+static void event(run *r, const char *what, const char *detail)
+{
+    csv_put(&r->events, r->s.t);
+    csv_put_text(&r->events, what);
+    csv_put_text(&r->events, detail);
+    csv_end_row(&r->events);
+}
+
+static void write_series_row(run *r)
+{
+    solver *s = &r->s;
+    diagnostics dg;
+    diagnostics_compute(s, &dg);
+    double energy = dg.ekin + dg.epot + dg.eint;
+    if (s->step == 0) r->energy0 = energy;
+    csv_file *c = &r->timeseries;
+    csv_put(c, s->t);
+    csv_put_long(c, s->step);
+    csv_put(c, s->dt);
+    csv_put_long(c, (long)s->p.n_fluid);
+    for (int k = 0; k < 4; k++) csv_put_empty(c); /* eps_v1..3, eps_gm: volume issue */
+    csv_put(c, dg.vol_sph / r->v0 - 1.0);
+    csv_put(c, dg.mass / r->mass0 - 1.0);
+    csv_put(c, 0.0); /* eta */
+    csv_put(c, 0.0); /* edbc */
+    csv_put_long(c, 0); /* n_edbc */
+    csv_put_empty(c);   /* n_free_surface: volume issue */
+    csv_put(c, dg.ekin);
+    csv_put(c, dg.epot);
+    csv_put(c, dg.eint);
+    csv_put(c, s->work_in);
+    csv_put(c, s->work_in - (energy - r->energy0));
+    for (int d = 0; d < 3; d++) csv_put(c, dg.com[d]);
+    csv_put(c, dg.xmin);
+    csv_put(c, dg.xmax);
+    csv_put(c, dg.ymax);
+    csv_put(c, dg.umax);
+    csv_put(c, dg.rho_min);
+    csv_put(c, dg.rho_max);
+    csv_end_row(c);
+
+    /* Eq. (6): the sound speed assumes speeds below c0/10 */
+    int fast = dg.umax > 0.1 * s->pp.c0;
+    if (fast && !r->speed_warned) {
+        char detail[128];
+        snprintf(detail, sizeof detail, "U_max = %.4g m/s exceeds c0/10 = %.4g m/s (Eq. 6)",
+                 dg.umax, 0.1 * s->pp.c0);
+        event(r, "speed_above_c0_over_10", detail);
+    }
+    r->speed_warned = fast;
+}
+
+/* The fields of design §5 that exist so far. */
+static int snapshot_fields(solver *s, snapshot_field *f)
+{
+    particles *p = &s->p;
+    int n = 0;
+    f[n++] = (snapshot_field){"id", FIELD_INT64, 1, {p->id}};
+    f[n] = (snapshot_field){"position", FIELD_DOUBLE, DIM, {0}};
+    for (int d = 0; d < DIM; d++) f[n].component[d] = p->x[d];
+    n++;
+    f[n] = (snapshot_field){"velocity", FIELD_DOUBLE, DIM, {0}};
+    for (int d = 0; d < DIM; d++) f[n].component[d] = p->u[d];
+    n++;
+    f[n++] = (snapshot_field){"density", FIELD_DOUBLE, 1, {p->rho}};
+    f[n++] = (snapshot_field){"pressure", FIELD_DOUBLE, 1, {p->p}};
+    f[n++] = (snapshot_field){"mass", FIELD_DOUBLE, 1, {p->m}};
+    f[n++] = (snapshot_field){"volume", FIELD_DOUBLE, 1, {p->vol}};
+    f[n++] = (snapshot_field){"lambda", FIELD_DOUBLE, 1, {p->lambda}};
+    f[n] = (snapshot_field){"shifting", FIELD_DOUBLE, DIM, {0}};
+    for (int d = 0; d < DIM; d++) f[n].component[d] = p->shift[d];
+    n++;
+    return n;
+}
+
+static int write_snapshot(run *r)
+{
+    solver *s = &r->s;
+    if (r->n_snapshots == r->cap_snapshots) {
+        int cap = r->cap_snapshots ? 2 * r->cap_snapshots : 64;
+        char **files = realloc(r->snapshot_files, (size_t)cap * sizeof *files);
+        if (files) r->snapshot_files = files;
+        double *times = realloc(r->snapshot_times, (size_t)cap * sizeof *times);
+        if (times) r->snapshot_times = times;
+        size_t *counts = realloc(r->snapshot_counts, (size_t)cap * sizeof *counts);
+        if (counts) r->snapshot_counts = counts;
+        if (!files || !times || !counts) return -1;
+        r->cap_snapshots = cap;
+    }
+    char name[64], path[CONFIG_PATH_MAX + 96], err[512];
+    snprintf(name, sizeof name, "snapshots/%06d.h5", r->n_snapshots);
+    out_path(r, path, sizeof path, name);
+    snapshot_field fields[16];
+    int n_fields = snapshot_fields(s, fields);
+    snapshot_attrs attrs = {s->t, s->step, 0.0, DIM, s->dv.dr, s->dv.h, r->case_text};
+    if (snapshot_write(path, s->p.n_fluid, fields, n_fields, &attrs, err, sizeof err)) {
+        log_error("vcsph: %s", err);
+        return -1;
+    }
+    int k = r->n_snapshots++;
+    r->snapshot_files[k] = strdup(name);
+    r->snapshot_times[k] = s->t;
+    r->snapshot_counts[k] = s->p.n_fluid;
+    out_path(r, path, sizeof path, "snapshots.xmf");
+    if (!r->snapshot_files[k] ||
+        snapshot_write_xdmf(path, r->n_snapshots, (const char *const *)r->snapshot_files,
+                            r->snapshot_times, r->snapshot_counts, fields, n_fields, DIM, err,
+                            sizeof err)) {
+        log_error("vcsph: %s", err);
+        return -1;
+    }
+    return 0;
+}
+
+static char *resolved_case_text(const config *cfg)
+{
+    char *text = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&text, &len);
+    if (!f) return NULL;
+    config_write(cfg, f);
+    fclose(f);
+    return text;
+}
+
+static int open_outputs(run *r)
+{
+    char path[CONFIG_PATH_MAX + 64];
+    out_path(r, path, sizeof path, "snapshots");
+    if (make_dir(r->opt->output_dir) || make_dir(path)) {
+        log_error("vcsph: cannot create output directory %s: %s", r->opt->output_dir,
+                  strerror(errno));
+        return -1;
+    }
+    out_path(r, path, sizeof path, "log.txt");
+    if (log_open(path)) return -1;
+    out_path(r, path, sizeof path, "case.ini");
+    FILE *f = fopen(path, "w");
+    if (!f || fputs(r->case_text, f) == EOF || fclose(f)) return -1;
+    out_path(r, path, sizeof path, "timeseries.csv");
+    if (csv_open(&r->timeseries, path, timeseries_header)) return -1;
+    out_path(r, path, sizeof path, "events.csv");
+    return csv_open(&r->events, path, "t,event,detail");
+}
+
+static void close_run(run *r)
+{
+    csv_close(&r->timeseries);
+    csv_close(&r->events);
+    for (int k = 0; k < r->n_snapshots; k++) free(r->snapshot_files[k]);
+    free(r->snapshot_files);
+    free(r->snapshot_times);
+    free(r->snapshot_counts);
+    free(r->case_text);
+    solver_free(&r->s);
+    log_close();
+}
+
+/* Whether an output with interval `every` (0: every step) is due at t; moves *next on. */
+static int output_due(double t, double every, double *next, int last)
+{
+    if (every <= 0.0) return 1;
+    if (t < *next && !last) return 0;
+    *next = (floor(t / every + 1e-9) + 1.0) * every;
+    return 1;
+}
+
+/* Writes the rows and snapshots that are due at the current time. */
+static int outputs_due(run *r, int last)
+{
+    const config *cfg = r->cfg;
+    double t = r->s.t;
+    if (output_due(t, cfg->timeseries_every, &r->next_series, last)) write_series_row(r);
+    if (cfg->snapshot_every > 0 && output_due(t, cfg->snapshot_every, &r->next_snapshot, last))
+        return write_snapshot(r);
+    return 0;
+}
+
+static int time_loop(run *r)
+{
+    solver *s = &r->s;
+    const config *cfg = r->cfg;
+    char msg[512];
+    progress_start(&r->pr, cfg->t_end, s->p.n_fluid, s->step, r->opt->quiet);
+    while (s->t < cfg->t_end) {
+        if (solver_step(s, cfg->t_end)) {
+            progress_clear(&r->pr);
+            log_error("vcsph: out of memory at step %ld", s->step);
+            return RUN_FAILED;
+        }
+        if (s->max_displacement > 0.5 * s->skin) {
+            snprintf(msg, sizeof msg, "a particle moved %.3g m > skin/2 = %.3g m in one step",
+                     s->max_displacement, 0.5 * s->skin);
+            event(r, "neighbour_skin_exceeded", msg);
+        }
+        if (health_check(s, msg, sizeof msg)) {
+            progress_clear(&r->pr);
+            log_error("vcsph: %s", msg);
+            event(r, "breakdown", msg);
+            write_series_row(r);
+            if (write_snapshot(r) == 0)
+                log_error("vcsph: last state written to %s/snapshots/%06d.h5", r->opt->output_dir,
+                          r->n_snapshots - 1);
+            return RUN_BREAKDOWN;
+        }
+        int last = s->t >= cfg->t_end;
+        if (outputs_due(r, last)) return RUN_FAILED;
+        progress_update(&r->pr, s->t, s->step, last);
+    }
+    progress_clear(&r->pr);
+    return RUN_OK;
+}
+
+int simulation_run_dim(const config *cfg, const run_options *opt)
+{
+    run r;
+    memset(&r, 0, sizeof r);
+    r.cfg = cfg;
+    r.opt = opt;
+    log_set_quiet(opt->quiet);
+    char err[1024];
+    int status = solver_init(&r.s, cfg, err, sizeof err);
+    if (status) {
+        log_error("vcsph: %s", err);
+        return status;
+    }
+    r.case_text = resolved_case_text(cfg);
+    if (!r.case_text || open_outputs(&r)) {
+        log_error("vcsph: cannot write the outputs in %s", opt->output_dir);
+        close_run(&r);
+        return RUN_FAILED;
+    }
+    const derived *dv = &r.s.dv;
+    log_info("vcsph: %s, %dD, %s, %ld particles, dr = %.4g m, c0 = %.4g m/s, t_end = %g s",
+             cfg->name, DIM, config_scheme_name(cfg->scheme), dv->n_fluid, dv->dr, dv->c0,
+             cfg->t_end);
+    log_info("vcsph: output in %s", opt->output_dir);
+    r.v0 = dv->v0;
+    solver_update_eos(&r.s);
+    diagnostics dg;
+    diagnostics_compute(&r.s, &dg);
+    r.mass0 = dg.mass;
+    double wall0 = progress_wall_time();
+    status = outputs_due(&r, 0) ? RUN_FAILED : time_loop(&r);
+    double wall = progress_wall_time() - wall0;
+    if (status == RUN_OK)
+        log_info("vcsph: done: %ld steps in %.1f s (%.3g particle-steps/s); output in %s",
+                 r.s.step, wall, wall > 0 ? (double)r.s.step * (double)dv->n_fluid / wall : 0.0,
+                 opt->output_dir);
+    close_run(&r);
+    return status;
+}

@@ -1,0 +1,27 @@
+/* motion: the prescribed tank motion (theory §6) and the fictitious body force it causes in
+ * the tank frame. */
+#ifndef VCSPH_MOTION_H
+#define VCSPH_MOTION_H
+
+#include "core/config.h"
+#include <stddef.h>
+
+typedef struct {
+    motion_kind kind;
+    double amplitude, omega, decay, phase, duration; /* duration 0: whole run */
+    /* type = table: knots and the natural cubic spline's second derivatives per axis */
+    size_t n_knots;
+    double *t, *pos[3], *acc[3];
+} motion;
+
+/* Reads the table file when there is one. Returns 0, or 2 with a message in err. */
+int motion_init(motion *mo, const config *cfg, char *err, size_t err_len);
+void motion_free(motion *mo);
+/* Tank acceleration (m/s^2) at time t along x, y, z of the tank frame. */
+void motion_acceleration(const motion *mo, double t, double a[3]);
+/* Tank displacement (m) at time t. */
+void motion_position(const motion *mo, double t, double x[3]);
+/* Largest |g - a_tank| over [0, t_end] (sampled), the g_max of the sound-speed rule. */
+double motion_max_effective_gravity(const motion *mo, double gravity, double t_end);
+
+#endif

@@ -1,0 +1,92 @@
+/* tank: ghost particles and bounce-back. */
+#include "boundary/tank.h"
+#include "physics/eos.h"
+
+int tank_make_ghosts(const tank *t, particles *p, double reach)
+{
+    size_t n_fluid = p->n_fluid, g = n_fluid;
+    /* serial and in fluid order: the ghost list is the same for any thread count */
+    for (size_t i = 0; i < n_fluid; i++) {
+        /* per axis, the walls this particle is near: none, low, high (a thin tank: both) */
+        unsigned options[DIM][3];
+        int n_options[DIM];
+        int near_any = 0;
+        for (int d = 0; d < DIM; d++) {
+            n_options[d] = 0;
+            options[d][n_options[d]++] = 0;
+            if (p->x[d][i] < reach) options[d][n_options[d]++] = 1u << (2 * d);
+            if (p->x[d][i] > t->size[d] - reach) options[d][n_options[d]++] = 2u << (2 * d);
+            near_any |= n_options[d] > 1;
+        }
+        if (!near_any) continue;
+        /* every combination of one option per axis but "none" everywhere: a wall, an edge
+           (two walls) or a corner (three walls) */
+        int combo[DIM] = {0};
+        for (;;) {
+            unsigned walls = 0;
+            for (int d = 0; d < DIM; d++) walls |= options[d][combo[d]];
+            if (walls) {
+                if (g + 1 > p->capacity && particles_reserve(p, 2 * p->capacity)) return -1;
+                p->ghost_source[g - n_fluid] = (int32_t)i;
+                p->ghost_walls[g - n_fluid] = (uint8_t)walls;
+                p->id[g] = p->id[i];
+                g++;
+            }
+            int d = 0;
+            while (d < DIM && ++combo[d] == n_options[d]) combo[d++] = 0;
+            if (d == DIM) break;
+        }
+    }
+    p->n_total = g;
+    return 0;
+}
+
+void tank_refresh_ghosts(const tank *t, particles *p, vec g_eff, double rho0, double c0)
+{
+    size_t n_fluid = p->n_fluid;
+    int no_slip = t->wall == WALL_NO_SLIP;
+#pragma omp parallel for schedule(static)
+    for (size_t g = n_fluid; g < p->n_total; g++) {
+        size_t i = (size_t)p->ghost_source[g - n_fluid];
+        unsigned walls = p->ghost_walls[g - n_fluid];
+        vec xi = vec_load(p->x, i), ui = vec_load(p->u, i);
+        vec xg = tank_mirror_position(t, xi, walls);
+        vec ug = tank_mirror_vector(ui, walls);
+        vec_store(p->x, g, xg);
+        vec_store(p->u, g, ug);
+        vec_store(p->u_wall, g, no_slip ? vec_scale(ui, -1.0) : ug);
+        double pg = p->p[i] + p->rho[i] * vec_dot(g_eff, vec_sub(xg, xi));
+        p->p[g] = pg;
+        p->rho[g] = eos_density(pg, rho0, c0);
+        p->m[g] = p->m[i];
+        p->vol[g] = p->m[g] / p->rho[g];
+    }
+}
+
+void tank_mirror_step_fields(const tank *t, particles *p, vec g_eff, double c0)
+{
+    (void)t;
+    size_t n_fluid = p->n_fluid;
+#pragma omp parallel for schedule(static)
+    for (size_t g = n_fluid; g < p->n_total; g++) {
+        size_t i = (size_t)p->ghost_source[g - n_fluid];
+        unsigned walls = p->ghost_walls[g - n_fluid];
+        vec grad_hydro = vec_scale(g_eff, p->rho[i] / (c0 * c0));
+        vec dynamic = vec_sub(vec_load(p->grad_rho, i), grad_hydro);
+        vec_store(p->grad_rho, g, vec_add(tank_mirror_vector(dynamic, walls), grad_hydro));
+        p->nu_t[g] = p->nu_t[i];
+        p->nu_delta[g] = p->nu_delta[i];
+    }
+}
+
+void tank_bounce_back(const tank *t, particles *p, double dr)
+{
+    double near = 0.25 * dr;
+#pragma omp parallel for schedule(static)
+    for (size_t i = 0; i < p->n_fluid; i++) {
+        for (int d = 0; d < DIM; d++) {
+            double x = p->x[d][i], u = p->u[d][i];
+            if ((x < near && u < 0.0) || (t->size[d] - x < near && u > 0.0)) p->u[d][i] = -u;
+        }
+    }
+}

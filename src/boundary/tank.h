@@ -1,0 +1,79 @@
+/* tank: the rectangular tank in its own frame: ghost particles of its walls (Colagrossi &
+ * Landrini 2003), wall distance and bounce-back (sec. 2.5; theory §5). */
+#ifndef VCSPH_TANK_H
+#define VCSPH_TANK_H
+
+#include "core/config.h"
+#include "core/particles.h"
+#include "core/vec.h"
+
+typedef struct {
+    double size[DIM]; /* L, D[, W]: walls at x_d = 0 and x_d = size[d] */
+    wall_kind wall;
+} tank;
+
+#define tank_make_ghosts DIM_NAME(tank_make_ghosts)
+#define tank_refresh_ghosts DIM_NAME(tank_refresh_ghosts)
+#define tank_mirror_step_fields DIM_NAME(tank_mirror_step_fields)
+#define tank_bounce_back DIM_NAME(tank_bounce_back)
+
+/* Rebuilds the ghost list: every fluid particle within `reach` of a wall gets an image across
+ * it, and across each pair (and triple) of walls near an edge or corner. Only the list
+ * (source, walls) is made here; tank_refresh_ghosts fills the state. Returns 0 or -1. */
+int tank_make_ghosts(const tank *t, particles *p, double reach);
+
+/* Ghost state from the current fluid state (every RK stage): mirrored position; velocity
+ * with the normal components reversed (free slip) and, for the viscous term, reversed
+ * whole (no slip); mass of the source; pressure continued hydrostatically,
+ * p_g = p_i + rho_i g_eff . (r_g - r_i), and density from the EOS. Needs fluid p. */
+void tank_refresh_ghosts(const tank *t, particles *p, vec g_eff, double rho0, double c0);
+
+/* Per-step fields of the ghosts from their sources: eddy viscosity and diffusion coefficient
+ * copied; density gradient = mirror of the source's dynamic part plus the hydrostatic
+ * gradient rho g_eff / c0^2, consistent with the hydrostatic continuation above. */
+void tank_mirror_step_fields(const tank *t, particles *p, vec g_eff, double c0);
+
+/* After a step: particles closer than dr/4 to a wall and moving towards it have their normal
+ * velocity reversed (sec. 2.5). */
+void tank_bounce_back(const tank *t, particles *p, double dr);
+
+/* Distance to the nearest wall plane (sec. 2.5) and its axis. */
+static inline double tank_wall_distance(const tank *t, vec x, int *axis)
+{
+    double best = INFINITY;
+    for (int d = 0; d < DIM; d++) {
+        double lo = x.c[d], hi = t->size[d] - x.c[d];
+        double m = lo < hi ? lo : hi;
+        if (m < best) {
+            best = m;
+            *axis = d;
+        }
+    }
+    return best;
+}
+
+static inline int tank_contains(const tank *t, vec x)
+{
+    for (int d = 0; d < DIM; d++)
+        if (!(x.c[d] >= 0.0 && x.c[d] <= t->size[d])) return 0;
+    return 1;
+}
+
+/* Mirror of a vector across the walls in `walls`: the components normal to them reversed. */
+static inline vec tank_mirror_vector(vec v, unsigned walls)
+{
+    for (int d = 0; d < DIM; d++)
+        if (walls & (3u << (2 * d))) v.c[d] = -v.c[d];
+    return v;
+}
+
+static inline vec tank_mirror_position(const tank *t, vec x, unsigned walls)
+{
+    for (int d = 0; d < DIM; d++) {
+        if (walls & (1u << (2 * d))) x.c[d] = -x.c[d];
+        if (walls & (2u << (2 * d))) x.c[d] = 2.0 * t->size[d] - x.c[d];
+    }
+    return x;
+}
+
+#endif

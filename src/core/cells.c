@@ -1,0 +1,171 @@
+/* cells: binning by counting sort and gather-style neighbour lists. */
+#include "core/cells.h"
+#include "core/vec.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+int cells_setup(cell_grid *g, const double lo[DIM], const double hi[DIM], double cell_size)
+{
+    size_t n_cells = 1;
+    for (int d = 0; d < DIM; d++) {
+        g->origin[d] = lo[d];
+        int n = (int)floor((hi[d] - lo[d]) / cell_size);
+        g->n[d] = n < 1 ? 1 : n;
+        n_cells *= (size_t)g->n[d];
+    }
+    /* cells a little larger than asked, so that the box is covered exactly */
+    double size = cell_size;
+    for (int d = 0; d < DIM; d++) {
+        double s = (hi[d] - lo[d]) / g->n[d];
+        if (s > size) size = s;
+    }
+    g->size = size;
+    g->n_cells = n_cells;
+    if (n_cells + 1 > g->cells_capacity) {
+        size_t *s = realloc(g->start, (n_cells + 1) * sizeof *s);
+        if (!s) return -1;
+        g->start = s;
+        g->cells_capacity = n_cells + 1;
+    }
+    return 0;
+}
+
+void cells_free(cell_grid *g)
+{
+    free(g->start);
+    free(g->item);
+    free(g->cell_of);
+    memset(g, 0, sizeof *g);
+}
+
+static inline int cell_coord(const cell_grid *g, int d, double x)
+{
+    int c = (int)floor((x - g->origin[d]) / g->size);
+    if (c < 0) return 0;
+    if (c >= g->n[d]) return g->n[d] - 1;
+    return c;
+}
+
+static inline size_t cell_index(const cell_grid *g, const int c[DIM])
+{
+    size_t k = (size_t)c[DIM - 1];
+    for (int d = DIM - 2; d >= 0; d--) k = k * (size_t)g->n[d] + (size_t)c[d];
+    return k;
+}
+
+int cells_bin(cell_grid *g, double *const x[DIM], size_t n)
+{
+    if (n > g->item_capacity) {
+        uint32_t *item = realloc(g->item, n * sizeof *item);
+        if (!item) return -1;
+        g->item = item;
+        uint32_t *cell_of = realloc(g->cell_of, n * sizeof *cell_of);
+        if (!cell_of) return -1;
+        g->cell_of = cell_of;
+        g->item_capacity = n;
+    }
+#pragma omp parallel for schedule(static)
+    for (size_t i = 0; i < n; i++) {
+        int c[DIM];
+        for (int d = 0; d < DIM; d++) c[d] = cell_coord(g, d, x[d][i]);
+        g->cell_of[i] = (uint32_t)cell_index(g, c);
+    }
+    memset(g->start, 0, (g->n_cells + 1) * sizeof *g->start);
+    for (size_t i = 0; i < n; i++) g->start[g->cell_of[i] + 1]++;
+    for (size_t c = 0; c < g->n_cells; c++) g->start[c + 1] += g->start[c];
+    /* fill in ascending particle order: the sort is stable */
+    for (size_t i = 0; i < n; i++) {
+        size_t c = g->cell_of[i];
+        g->item[g->start[c]++] = (uint32_t)i;
+    }
+    for (size_t c = g->n_cells; c > 0; c--) g->start[c] = g->start[c - 1];
+    g->start[0] = 0;
+    return 0;
+}
+
+void cells_sort_order(const cell_grid *g, size_t n, size_t *order)
+{
+    size_t k = 0;
+    for (size_t m = 0; m < g->start[g->n_cells]; m++) {
+        uint32_t i = g->item[m];
+        if (i < n) order[k++] = i;
+    }
+}
+
+void neighbours_free(neighbour_list *nl)
+{
+    free(nl->count);
+    free(nl->index);
+    memset(nl, 0, sizeof *nl);
+}
+
+/* Scans the 3^DIM cells around particle i in a fixed order; returns how many neighbours it
+ * found (it stores at most `cap` of them). */
+static int32_t scan_neighbours(const cell_grid *g, double *const x[DIM], size_t i, double r2max,
+                               int32_t *row, int32_t cap)
+{
+    int c0[DIM], lo[DIM], hi[DIM];
+    for (int d = 0; d < DIM; d++) {
+        c0[d] = cell_coord(g, d, x[d][i]);
+        lo[d] = c0[d] > 0 ? c0[d] - 1 : 0;
+        hi[d] = c0[d] < g->n[d] - 1 ? c0[d] + 1 : g->n[d] - 1;
+    }
+    vec xi = vec_load(x, i);
+    int32_t found = 0;
+    int c[DIM];
+#if DIM == 3
+    for (c[2] = lo[2]; c[2] <= hi[2]; c[2]++)
+#endif
+        for (c[1] = lo[1]; c[1] <= hi[1]; c[1]++) {
+            /* cells adjacent along x are contiguous in the item array */
+            c[0] = lo[0];
+            size_t first = g->start[cell_index(g, c)];
+            c[0] = hi[0];
+            size_t last = g->start[cell_index(g, c) + 1];
+            for (size_t m = first; m < last; m++) {
+                uint32_t j = g->item[m];
+                if (j == i) continue;
+                double r2 = vec_norm2(vec_sub(vec_load(x, j), xi));
+                if (r2 < r2max) {
+                    if (found < cap) row[found] = (int32_t)j;
+                    found++;
+                }
+            }
+        }
+    return found;
+}
+
+int neighbours_build(neighbour_list *nl, const cell_grid *g, double *const x[DIM], size_t n_rows,
+                     double radius)
+{
+    double r2max = radius * radius;
+    nl->radius = radius;
+    nl->n_rows = n_rows;
+    if (nl->row_capacity == 0) nl->row_capacity = DIM == 2 ? 64 : 128;
+    for (;;) {
+        if (n_rows > nl->capacity_rows) {
+            int32_t *count = realloc(nl->count, n_rows * sizeof *count);
+            if (!count) return -1;
+            nl->count = count;
+            nl->capacity_rows = n_rows;
+        }
+        size_t need = (n_rows ? n_rows : 1) * nl->row_capacity;
+        if (need > nl->index_capacity) {
+            free(nl->index);
+            nl->index = malloc(need * sizeof *nl->index);
+            if (!nl->index) return -1;
+            nl->index_capacity = need;
+        }
+        int32_t cap = (int32_t)nl->row_capacity, most = 0;
+#pragma omp parallel for schedule(static) reduction(max : most)
+        for (size_t i = 0; i < n_rows; i++) {
+            int32_t k = scan_neighbours(g, x, i, r2max, nl->index + i * (size_t)cap, cap);
+            nl->count[i] = k;
+            if (k > most) most = k;
+        }
+        if (most <= cap) return 0;
+        /* a row overflowed (strong compression): redo with room to spare */
+        nl->row_capacity = (size_t)most + (size_t)most / 4;
+    }
+}

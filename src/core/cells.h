@@ -1,0 +1,52 @@
+/* cells: the cell list (particles binned in cubes of side >= the search radius), the sort of
+ * the fluid by cell, and per-particle neighbour lists built from it. */
+#ifndef VCSPH_CELLS_H
+#define VCSPH_CELLS_H
+
+#include "core/dim.h"
+#include <stddef.h>
+#include <stdint.h>
+
+typedef struct {
+    double origin[DIM]; /* lower corner of cell (0, 0[, 0]) */
+    double size;        /* cell side >= search radius */
+    int n[DIM];         /* cells per axis */
+    size_t n_cells;
+    size_t *start;      /* n_cells + 1: items of cell c are item[start[c] .. start[c+1]) */
+    uint32_t *item;     /* particle indices, ascending within each cell */
+    uint32_t *cell_of;  /* cell of each binned particle */
+    size_t item_capacity, cells_capacity;
+} cell_grid;
+
+/* Neighbour lists: row i holds the indices j != i within `radius` of i, in the fixed order of
+ * the cell scan (so every sum over them is the same for any number of threads). */
+typedef struct {
+    size_t n_rows, row_capacity, capacity_rows, index_capacity;
+    int32_t *count;
+    int32_t *index; /* n_rows x row_capacity */
+    double radius;
+} neighbour_list;
+
+#define cells_setup DIM_NAME(cells_setup)
+#define cells_free DIM_NAME(cells_free)
+#define cells_bin DIM_NAME(cells_bin)
+#define cells_sort_order DIM_NAME(cells_sort_order)
+#define neighbours_build DIM_NAME(neighbours_build)
+#define neighbours_free DIM_NAME(neighbours_free)
+
+/* Lays out cells of side >= cell_size over the box [lo, hi]; particles outside it are
+ * clamped into the border cells (still found, just less efficiently). */
+int cells_setup(cell_grid *g, const double lo[DIM], const double hi[DIM], double cell_size);
+void cells_free(cell_grid *g);
+/* Bins particles [0, n) by position: a stable counting sort. */
+int cells_bin(cell_grid *g, double *const x[DIM], size_t n);
+/* After cells_bin of n particles: order[k] = the particle that goes to slot k when particles
+ * are sorted by cell (stable: ascending index within a cell). */
+void cells_sort_order(const cell_grid *g, size_t n, size_t *order);
+/* Lists, for each of the first n_rows particles, its neighbours within `radius` among all the
+ * binned particles. Returns 0, or -1 when out of memory. */
+int neighbours_build(neighbour_list *nl, const cell_grid *g, double *const x[DIM], size_t n_rows,
+                     double radius);
+void neighbours_free(neighbour_list *nl);
+
+#endif

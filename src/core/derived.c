@@ -1,0 +1,73 @@
+/* derived: numbers that follow from the case (theory §3, §7, §10). */
+#include "core/derived.h"
+#include "scheme/models.h"
+
+#include <math.h>
+
+static double min2(double a, double b) { return a < b ? a : b; }
+
+void derived_compute(const config *cfg, const motion *mo, derived *dv)
+{
+    double dr = cfg->liquid_height / cfg->resolution;
+    dv->dr = dr;
+    dv->h = cfg->h_over_dr * dr;
+    dv->n_axis[0] = lround(cfg->liquid_length / dr);
+    dv->n_axis[1] = cfg->resolution;
+    dv->n_axis[2] = cfg->dim == 3 ? lround(cfg->tank_width / dr) : 1;
+    dv->n_fluid = dv->n_axis[0] * dv->n_axis[1] * dv->n_axis[2];
+    dv->v0 = (double)dv->n_fluid * pow(dr, cfg->dim);
+
+    dv->g_max = motion_max_effective_gravity(mo, cfg->gravity, cfg->t_end);
+    /* Eq. (6) with U_max the speed of a fall from H under g_max */
+    dv->c0 = cfg->sound_speed > 0.0 ? cfg->sound_speed
+                                     : 10.0 * sqrt(2.0 * dv->g_max * cfg->liquid_height);
+    dv->k_c = cfg->cfl > 0.0 ? cfg->cfl : models_params(cfg->scheme).k_c;
+
+    double h = dv->h;
+    dv->dt_v = 0.125 * h * h / cfg->viscosity;
+    dv->dt_c = dv->k_c * h / dv->c0;
+    dv->dt_a = dv->g_max > 0.0 ? 0.25 * sqrt(h / dv->g_max) : INFINITY;
+    dv->dt_st = cfg->surface_tension > 0.0
+                    ? 0.25 * sqrt(cfg->density * h * h * h / (2.0 * M_PI * cfg->surface_tension))
+                    : INFINITY;
+    dv->dt = min2(min2(dv->dt_v, dv->dt_c), min2(dv->dt_a, dv->dt_st));
+
+    double width = cfg->dim == 3 ? cfg->tank_width : 1.0;
+    dv->mass_liquid = cfg->density * cfg->liquid_length * cfg->liquid_height * width;
+    int periodic = (cfg->motion == MOTION_SWAY || cfg->motion == MOTION_HEAVE) && cfg->period > 0;
+    dv->omega = periodic ? 2.0 * M_PI / cfg->period : 0.0;
+    double aw = cfg->amplitude * dv->omega;
+    dv->d_energy = 0.5 * dv->mass_liquid * aw * aw;
+    dv->d_power = periodic ? dv->d_energy / cfg->period : 0.0;
+}
+
+void derived_print(const config *cfg, const derived *dv, FILE *out)
+{
+    const char *per = cfg->dim == 2 ? " (per unit width)" : "";
+    fprintf(out, "dim              %d\n", cfg->dim);
+    fprintf(out, "scheme           %s\n", config_scheme_name(cfg->scheme));
+    fprintf(out, "dr               %.6g m (N = %d)\n", dv->dr, cfg->resolution);
+    fprintf(out, "h                %.6g m (h/dr = %g, support 2h = %.6g m)\n", dv->h,
+            cfg->h_over_dr, 2.0 * dv->h);
+    if (cfg->dim == 2)
+        fprintf(out, "fluid particles  %ld (%ld x %ld)\n", dv->n_fluid, dv->n_axis[0],
+                dv->n_axis[1]);
+    else
+        fprintf(out, "fluid particles  %ld (%ld x %ld x %ld)\n", dv->n_fluid, dv->n_axis[0],
+                dv->n_axis[1], dv->n_axis[2]);
+    fprintf(out, "V0               %.6g m^%d\n", dv->v0, cfg->dim);
+    fprintf(out, "g_max            %.6g m/s^2\n", dv->g_max);
+    fprintf(out, "c0               %.6g m/s%s\n", dv->c0, cfg->sound_speed > 0 ? "" : " (auto)");
+    fprintf(out, "K_c              %g\n", dv->k_c);
+    fprintf(out, "dt_c             %.4g s\n", dv->dt_c);
+    fprintf(out, "dt_v             %.4g s\n", dv->dt_v);
+    fprintf(out, "dt_a (g_max)     %.4g s\n", dv->dt_a);
+    if (isfinite(dv->dt_st)) fprintf(out, "dt_st            %.4g s\n", dv->dt_st);
+    fprintf(out, "dt estimate      %.4g s (%.3g steps to t_end = %g s)\n", dv->dt,
+            cfg->t_end / dv->dt, cfg->t_end);
+    fprintf(out, "M_L              %.6g kg%s\n", dv->mass_liquid, per);
+    if (dv->d_power > 0.0) {
+        fprintf(out, "dE               %.6g J%s\n", dv->d_energy, per);
+        fprintf(out, "dW               %.6g W%s\n", dv->d_power, per);
+    }
+}

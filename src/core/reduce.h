@@ -1,0 +1,16 @@
+/* reduce: every global reduction of the solver goes through here (design §2), in a fixed
+ * order, so that results do not depend on the number of threads (and MPI_Allreduce can drop
+ * in later). */
+#ifndef VCSPH_REDUCE_H
+#define VCSPH_REDUCE_H
+
+#include <stddef.h>
+
+/* Sum of a[0..n): blocks of fixed size summed in parallel, then the block sums in order. The
+ * grouping depends on n only, never on the thread count. */
+double reduce_sum(const double *a, size_t n);
+/* Largest of a[0..n) (-inf when n = 0); exact in any order. */
+double reduce_max(const double *a, size_t n);
+double reduce_min(const double *a, size_t n);
+
+#endif

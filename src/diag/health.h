@@ -1,0 +1,16 @@
+/* health: detection of a numerical breakdown (design §2): a NaN, a particle outside the tank,
+ * or a density outside rho0 (1 +- 0.2). */
+#ifndef VCSPH_HEALTH_H
+#define VCSPH_HEALTH_H
+
+#include "scheme/solver.h"
+
+#define HEALTH_DENSITY_BOUND 0.2
+
+#define health_check DIM_NAME(health_check)
+
+/* Returns 0 when every fluid particle is sound; otherwise 1 and a message naming the first
+ * bad particle (lowest index, so the same for any thread count), the time and the step. */
+int health_check(const solver *s, char *msg, size_t msg_len);
+
+#endif

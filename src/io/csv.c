@@ -1,0 +1,61 @@
+/* csv: writers. */
+#include "io/csv.h"
+
+#include <string.h>
+
+int csv_open(csv_file *c, const char *path, const char *header)
+{
+    c->column = 0;
+    c->f = fopen(path, "w");
+    if (!c->f) return -1;
+    fprintf(c->f, "%s\n", header);
+    fflush(c->f);
+    return 0;
+}
+
+void csv_close(csv_file *c)
+{
+    if (c->f) fclose(c->f);
+    c->f = NULL;
+}
+
+static void separator(csv_file *c)
+{
+    if (c->column++ > 0) fputc(',', c->f);
+}
+
+void csv_put(csv_file *c, double value)
+{
+    separator(c);
+    fprintf(c->f, "%.10g", value);
+}
+
+void csv_put_long(csv_file *c, long value)
+{
+    separator(c);
+    fprintf(c->f, "%ld", value);
+}
+
+void csv_put_empty(csv_file *c) { separator(c); }
+
+void csv_put_text(csv_file *c, const char *text)
+{
+    separator(c);
+    if (!strpbrk(text, ",\"\n")) {
+        fputs(text, c->f);
+        return;
+    }
+    fputc('"', c->f);
+    for (const char *s = text; *s; s++) {
+        if (*s == '"') fputc('"', c->f);
+        fputc(*s == '\n' ? ' ' : *s, c->f);
+    }
+    fputc('"', c->f);
+}
+
+void csv_end_row(csv_file *c)
+{
+    fputc('\n', c->f);
+    fflush(c->f);
+    c->column = 0;
+}

@@ -1,0 +1,22 @@
+/* csv: row-by-row CSV writers (timeseries.csv, events.csv), flushed after every row so a
+ * crash loses nothing already computed. */
+#ifndef VCSPH_CSV_H
+#define VCSPH_CSV_H
+
+#include <stdio.h>
+
+typedef struct {
+    FILE *f;
+    int column; /* columns written in the current row */
+} csv_file;
+
+/* Creates the file and writes the header line. Returns 0 or -1. */
+int csv_open(csv_file *c, const char *path, const char *header);
+void csv_close(csv_file *c);
+void csv_put(csv_file *c, double value);   /* %.10g */
+void csv_put_long(csv_file *c, long value);
+void csv_put_empty(csv_file *c);           /* a quantity not computed in this run */
+void csv_put_text(csv_file *c, const char *text); /* quoted when it holds , or " */
+void csv_end_row(csv_file *c);
+
+#endif

@@ -1,0 +1,107 @@
+/* fields: per-step geometry and the frozen diffusion terms. */
+#include "scheme/fields.h"
+#include "physics/diffusion.h"
+#include "physics/viscosity.h"
+
+/* Sums of one particle over its neighbours for the renormalized gradients (theory §2). */
+typedef struct {
+    mat l;                /* L_i = sum r_ji (x) r_ji F V_j, Eq. (10) */
+    vec drho;             /* sum (rho_j - rho_i) r_ji F V_j */
+    double du[DIM][DIM];  /* du[a][b] = sum (u_j - u_i)_a (r_ji)_b F V_j */
+} gradient_sums;
+
+static inline void gradient_sums_add(gradient_sums *s, vec r_ji, double fv, double drho, vec du)
+{
+    mat_add_outer(&s->l, fv, r_ji, r_ji);
+    s->drho = vec_axpy(s->drho, drho * fv, r_ji);
+    for (int a = 0; a < DIM; a++)
+        for (int b = 0; b < DIM; b++) s->du[a][b] += du.c[a] * r_ji.c[b] * fv;
+}
+
+/* ||D|| = sqrt(2 D:D), D the symmetric part of the velocity gradient G[a][b] = du_a/dx_b */
+static inline double strain_norm(double g[DIM][DIM])
+{
+    double dd = 0.0;
+    for (int a = 0; a < DIM; a++)
+        for (int b = 0; b < DIM; b++) {
+            double d = 0.5 * (g[a][b] + g[b][a]);
+            dd += d * d;
+        }
+    return sqrt(2.0 * dd);
+}
+
+static void geometry_and_gradients(const physics_params *pp, const tank *t, particles *p,
+                                   const neighbour_list *nl)
+{
+    const kernel *k = &pp->k;
+#pragma omp parallel for schedule(static)
+    for (size_t i = 0; i < p->n_fluid; i++) {
+        vec xi = vec_load(p->x, i), ui = vec_load(p->u, i);
+        double rhoi = p->rho[i];
+        gradient_sums s = {mat_zero(), vec_zero(), {{0}}};
+        const int32_t *row = nl->index + i * nl->row_capacity;
+        for (int32_t n = 0; n < nl->count[i]; n++) {
+            size_t j = (size_t)row[n];
+            vec r_ji = vec_sub(vec_load(p->x, j), xi);
+            double r2 = vec_norm2(r_ji);
+            if (r2 >= k->support2) continue;
+            double fv = kernel_f(k, sqrt(r2)) * p->vol[j];
+            gradient_sums_add(&s, r_ji, fv, p->rho[j] - rhoi, vec_sub(vec_load(p->u_wall, j), ui));
+        }
+        double lambda = mat_min_eigenvalue(&s.l);
+        p->lambda[i] = lambda;
+        /* near-singular L (drops, jets): fall back to the plain gradient (theory §2) */
+        mat l_inv = mat_identity();
+        if (lambda > pp->lambda_renormalize) mat_inverse(&s.l, &l_inv);
+        vec_store(p->grad_rho, i, mat_mul_vec(&l_inv, s.drho));
+        double g[DIM][DIM];
+        for (int a = 0; a < DIM; a++) {
+            vec row_a;
+            for (int b = 0; b < DIM; b++) row_a.c[b] = s.du[a][b];
+            vec ga = mat_mul_vec(&l_inv, row_a);
+            for (int b = 0; b < DIM; b++) g[a][b] = ga.c[b];
+        }
+        double dnorm = strain_norm(g);
+        p->nu_delta[i] = diffusion_coefficient(pp->c_delta, pp->filter_length, dnorm);
+        double damping = 1.0;
+        if (pp->van_driest) {
+            int axis = 0;
+            double y = tank_wall_distance(t, xi, &axis);
+            vec tangential = ui;
+            tangential.c[axis] = 0.0;
+            damping = van_driest_factor(y, vec_norm(tangential), pp->nu);
+        }
+        p->nu_t[i] = pp->les ? eddy_viscosity(pp->filter_length, damping, dnorm) : 0.0;
+    }
+}
+
+static void density_diffusion(const physics_params *pp, particles *p, const neighbour_list *nl)
+{
+    const kernel *k = &pp->k;
+#pragma omp parallel for schedule(static)
+    for (size_t i = 0; i < p->n_fluid; i++) {
+        vec xi = vec_load(p->x, i), gi = vec_load(p->grad_rho, i);
+        double rhoi = p->rho[i], nui = p->nu_delta[i], sum = 0.0;
+        const int32_t *row = nl->index + i * nl->row_capacity;
+        for (int32_t n = 0; n < nl->count[i]; n++) {
+            size_t j = (size_t)row[n];
+            vec r_ji = vec_sub(vec_load(p->x, j), xi);
+            double r2 = vec_norm2(r_ji);
+            if (r2 >= k->support2) continue;
+            double delta_ij = harmonic_mean_capped(nui, p->nu_delta[j], pp->delta_cap);
+            sum += diffusion_rho_pair(delta_ij, rhoi, p->rho[j], gi, vec_load(p->grad_rho, j),
+                                      r_ji, kernel_f(k, sqrt(r2)), p->vol[j]);
+        }
+        p->diff_rho[i] = sum;
+    }
+}
+
+void fields_compute(const physics_params *pp, const tank *t, particles *p,
+                    const neighbour_list *nl, vec g_eff)
+{
+    geometry_and_gradients(pp, t, p, nl);
+    tank_mirror_step_fields(t, p, g_eff, pp->c0);
+    if (pp->c_delta > 0.0) density_diffusion(pp, p, nl);
+    else
+        for (size_t i = 0; i < p->n_fluid; i++) p->diff_rho[i] = 0.0;
+}

@@ -1,0 +1,156 @@
+/* integrate: one time step, Eq. (8) and RK4 with frozen per-step terms (sec. 2.4). */
+#include "boundary/tank.h"
+#include "core/reduce.h"
+#include "scheme/fields.h"
+#include "scheme/solver.h"
+
+#include <string.h>
+
+/* Eq. (8); dt_a from the largest acceleration of the previous step */
+static double time_step(const solver *s)
+{
+    double dt = s->dv.dt_c;
+    if (s->dv.dt_v < dt) dt = s->dv.dt_v;
+    if (s->dv.dt_st < dt) dt = s->dv.dt_st;
+    if (s->max_acc > 0.0) {
+        double dt_a = 0.25 * sqrt(s->dv.h / s->max_acc);
+        if (dt_a < dt) dt = dt_a;
+    }
+    return dt;
+}
+
+static double max_speed(solver *s)
+{
+    particles *p = &s->p;
+#pragma omp parallel for schedule(static)
+    for (size_t i = 0; i < p->n_fluid; i++) s->scratch[i] = vec_norm(vec_load(p->u, i));
+    return reduce_max(s->scratch, p->n_fluid);
+}
+
+/* Sorts the fluid by cell, makes the ghosts and lists the neighbours within 2h + skin, where
+ * the skin covers the relative motion of two particles during the step: pairs beyond 2h add
+ * exactly zero, so the results do not depend on the skin as long as it is wide enough. */
+static int build_neighbours(solver *s, double dt)
+{
+    particles *p = &s->p;
+    double bound = dt * (max_speed(s) + dt * s->max_acc);
+    s->skin = 3.0 * bound > 0.05 * s->dv.dr ? 3.0 * bound : 0.05 * s->dv.dr;
+    double cutoff = 2.0 * s->dv.h + s->skin;
+    double lo[DIM], hi[DIM];
+    for (int d = 0; d < DIM; d++) {
+        lo[d] = -cutoff;
+        hi[d] = s->tank.size[d] + cutoff;
+    }
+    if (cells_setup(&s->grid, lo, hi, cutoff)) return -1;
+    /* fluid sorted by cell: neighbours are close in memory */
+    p->n_total = p->n_fluid;
+    if (cells_bin(&s->grid, p->x, p->n_fluid)) return -1;
+    cells_sort_order(&s->grid, p->n_fluid, s->order);
+    particles_permute_fluid(p, s->order, s->scratch);
+    if (tank_make_ghosts(&s->tank, p, cutoff)) return -1;
+    solver_update_eos(s);
+    tank_refresh_ghosts(&s->tank, p, solver_g_eff(s, s->t), s->pp.rho0, s->pp.c0);
+    if (cells_bin(&s->grid, p->x, p->n_total)) return -1;
+    return neighbours_build(&s->nl, &s->grid, p->x, p->n_fluid, cutoff);
+}
+
+/* The integrated variables and their rates, in the same order. */
+static void rk_arrays(solver *s, double **y, double **rate)
+{
+    for (int d = 0; d < DIM; d++) {
+        y[d] = s->p.x[d];
+        y[DIM + d] = s->p.u[d];
+        rate[d] = s->k.dx[d];
+        rate[DIM + d] = s->k.du[d];
+    }
+    y[2 * DIM] = s->p.rho;
+    y[2 * DIM + 1] = s->p.m;
+    rate[2 * DIM] = s->k.drho;
+    rate[2 * DIM + 1] = s->k.dm;
+}
+
+/* Input power -sum m a_tank . u (theory §10) */
+static double input_power(solver *s, double t)
+{
+    if (s->mo.kind == MOTION_NONE) return 0.0;
+    double a3[3];
+    motion_acceleration(&s->mo, t, a3);
+    vec a;
+    for (int d = 0; d < DIM; d++) a.c[d] = a3[d];
+    particles *p = &s->p;
+#pragma omp parallel for schedule(static)
+    for (size_t i = 0; i < p->n_fluid; i++)
+        s->scratch[i] = -p->m[i] * vec_dot(a, vec_load(p->u, i));
+    return reduce_sum(s->scratch, p->n_fluid);
+}
+
+static double max_acceleration(solver *s)
+{
+    particles *p = &s->p;
+#pragma omp parallel for schedule(static)
+    for (size_t i = 0; i < p->n_fluid; i++) s->scratch[i] = vec_norm(vec_load(s->k.du, i));
+    return reduce_max(s->scratch, p->n_fluid);
+}
+
+static double max_displacement(solver *s)
+{
+    particles *p = &s->p;
+#pragma omp parallel for schedule(static)
+    for (size_t i = 0; i < p->n_fluid; i++) {
+        double r2 = 0.0;
+        for (int d = 0; d < DIM; d++) {
+            double dx = p->x[d][i] - s->y0[d][i];
+            r2 += dx * dx;
+        }
+        s->scratch[i] = sqrt(r2);
+    }
+    return reduce_max(s->scratch, p->n_fluid);
+}
+
+int solver_step(solver *s, double t_stop)
+{
+    static const double stage_c[4] = {0.0, 0.5, 0.5, 1.0};
+    static const double stage_w[4] = {1.0 / 6.0, 1.0 / 3.0, 1.0 / 3.0, 1.0 / 6.0};
+    particles *p = &s->p;
+    size_t n = p->n_fluid;
+    double dt = time_step(s);
+    if (s->t + dt > t_stop) dt = t_stop - s->t;
+    s->dt = dt;
+    if (build_neighbours(s, dt)) return -1;
+
+    double *y[RK_VARS], *rate[RK_VARS];
+    rk_arrays(s, y, rate);
+    for (int v = 0; v < RK_VARS; v++) memcpy(s->y0[v], y[v], n * sizeof(double));
+    double work = 0.0;
+    for (int stage = 0; stage < 4; stage++) {
+        double ts = s->t + stage_c[stage] * dt, c = stage_c[stage] * dt;
+        if (stage > 0) {
+#pragma omp parallel for schedule(static)
+            for (size_t i = 0; i < n; i++)
+                for (int v = 0; v < RK_VARS; v++) y[v][i] = s->y0[v][i] + c * rate[v][i];
+        }
+        vec g_eff = solver_g_eff(s, ts);
+        solver_update_eos(s);
+        tank_refresh_ghosts(&s->tank, p, g_eff, s->pp.rho0, s->pp.c0);
+        if (stage == 0) fields_compute(&s->pp, &s->tank, p, &s->nl, g_eff);
+        rhs_compute(&s->pp, p, &s->nl, g_eff, &s->k);
+        if (stage == 0) s->max_acc = max_acceleration(s);
+        work += stage_w[stage] * input_power(s, ts);
+        double w = stage_w[stage];
+#pragma omp parallel for schedule(static)
+        for (size_t i = 0; i < n; i++)
+            for (int v = 0; v < RK_VARS; v++)
+                s->sum[v][i] = (stage == 0 ? 0.0 : s->sum[v][i]) + w * rate[v][i];
+    }
+#pragma omp parallel for schedule(static)
+    for (size_t i = 0; i < n; i++)
+        for (int v = 0; v < RK_VARS; v++) y[v][i] = s->y0[v][i] + dt * s->sum[v][i];
+    s->work_in += dt * work;
+    s->max_displacement = max_displacement(s);
+    /* land exactly on t_stop when the step was cut to reach it */
+    s->t = s->t + dt >= t_stop ? t_stop : s->t + dt;
+    s->step++;
+    tank_bounce_back(&s->tank, p, s->dv.dr);
+    solver_update_eos(s);
+    return 0;
+}

@@ -1,0 +1,25 @@
+/* rhs: the right-hand side of Eq. (3) for the fluid particles at one RK stage. */
+#ifndef VCSPH_RHS_H
+#define VCSPH_RHS_H
+
+#include "core/cells.h"
+#include "core/particles.h"
+#include "core/vec.h"
+#include "scheme/physics_params.h"
+
+/* Time derivatives of the integrated fluid state. */
+typedef struct {
+    double *dx[DIM];  /* dr/dt = u + du */
+    double *du[DIM];  /* du/dt */
+    double *drho;     /* drho/dt */
+    double *dm;       /* dm/dt */
+} rates;
+
+#define rhs_compute DIM_NAME(rhs_compute)
+
+/* Needs fluid p, vol, u_wall and the ghosts refreshed for this stage, and the frozen per-step
+ * fields. g_eff = g - a_tank(t) is the body force in the tank frame (theory §6). */
+void rhs_compute(const physics_params *pp, const particles *p, const neighbour_list *nl,
+                 vec g_eff, const rates *out);
+
+#endif

@@ -1,0 +1,65 @@
+/* solver: the state of a run and one time step (design §2): neighbours and ghosts, the
+ * frozen per-step fields, four RK4 stages, bounce-back. */
+#ifndef VCSPH_SOLVER_H
+#define VCSPH_SOLVER_H
+
+#include "boundary/motion.h"
+#include "boundary/tank.h"
+#include "core/cells.h"
+#include "core/config.h"
+#include "core/derived.h"
+#include "core/particles.h"
+#include "scheme/physics_params.h"
+#include "scheme/rhs.h"
+
+/* integrated fluid variables: x[DIM], u[DIM], rho, m */
+#define RK_VARS (2 * DIM + 2)
+
+typedef struct {
+    const config *cfg;
+    derived dv;
+    motion mo;
+    tank tank;
+    physics_params pp;
+    particles p;
+    cell_grid grid;
+    neighbour_list nl;
+
+    /* RK4 work arrays over the fluid */
+    double *y0[RK_VARS];   /* state at the start of the step */
+    double *sum[RK_VARS];  /* weighted sum of the stage rates */
+    rates k;               /* rates of the current stage */
+    double *scratch;       /* n_fluid doubles */
+    size_t *order;         /* n_fluid sort permutation */
+
+    double t, dt;
+    long step;
+    double max_acc;        /* largest |du/dt| of the last step (dt_a of Eq. 8) */
+    double skin;           /* neighbour-list margin of this step */
+    double max_displacement; /* largest move of a particle during the last step */
+    double work_in;        /* integral of the input power -sum m a_tank . u */
+} solver;
+
+#define solver_init DIM_NAME(solver_init)
+#define solver_free DIM_NAME(solver_free)
+#define solver_step DIM_NAME(solver_step)
+#define solver_g_eff DIM_NAME(solver_g_eff)
+#define solver_update_eos DIM_NAME(solver_update_eos)
+#define lattice_fill DIM_NAME(lattice_fill)
+
+/* Particles on a lattice filling the liquid box with the hydrostatic state (sec. 2.1).
+ * Returns 0, or 2 with a message. */
+int solver_init(solver *s, const config *cfg, char *err, size_t err_len);
+void solver_free(solver *s);
+/* Advances one time step of size min(Eq. (8), t_stop - t). Returns 0, or -1 out of memory. */
+int solver_step(solver *s, double t_stop);
+/* g_eff = g - a_tank(t) (theory §6) */
+vec solver_g_eff(const solver *s, double t);
+/* p and V = m/rho of the fluid from rho, m (the linear EOS). */
+void solver_update_eos(solver *s);
+
+/* Fills the fluid part of p: positions (i + 1/2) dr in the liquid box, p = rho0 |g| (H - y),
+ * rho from the EOS, m = rho dr^n, ids 0.. in lattice order. */
+int lattice_fill(particles *p, const config *cfg, const derived *dv);
+
+#endif

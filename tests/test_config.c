@@ -1,0 +1,536 @@
+/* Tests of the case-file parser (design §3): defaults, a full file, one test per kind of bad
+ * input (each must give exit status 2 and a message naming file, line and key), overrides, and
+ * the round trip config_write -> config_load. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include <cmocka.h>
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "core/config.h"
+
+#ifndef VCSPH_SOURCE_DIR
+#error "VCSPH_SOURCE_DIR must name the source tree (CMake defines it)"
+#endif
+#define DATA_DIR VCSPH_SOURCE_DIR "/tests/data/config"
+#define ERR_LEN 1024
+
+/* Lines: 1 [case], 2 t_end, 3 [tank], 4 length, 5 height, 6 [liquid], 7 height, 8 [numerics],
+ * 9 resolution. The bad cases below are variations of it. */
+#define MINIMAL                                                                                \
+    "[case]\nt_end = 1.0\n[tank]\nlength = 1.0\nheight = 0.5\n[liquid]\nheight = 0.2\n"        \
+    "[numerics]\nresolution = 20\n"
+
+static int load_text(config *cfg, const char *text, const char *const *ov, int n, char *err)
+{
+    return config_load_string(cfg, text, "bad.ini", ov, n, err, ERR_LEN);
+}
+
+static void assert_contains(const char *msg, const char *part)
+{
+    if (!strstr(msg, part)) {
+        print_error("message: %s\nlacks:   %s\n", msg, part);
+        fail();
+    }
+}
+
+/* ---- good files --------------------------------------------------------------------------- */
+
+static void test_minimal_gives_defaults(void **state)
+{
+    (void)state;
+    config c;
+    char err[ERR_LEN];
+    int rc = config_load(&c, DATA_DIR "/minimal.ini", NULL, 0, err, sizeof err);
+    if (rc) print_error("%s\n", err);
+    assert_int_equal(rc, 0);
+    assert_string_equal(c.name, "inm1");
+    assert_int_equal(c.dim, 2);
+    assert_true(c.t_end == 1.0);
+    assert_true(c.tank_length == 1.0 && c.tank_height == 0.5 && c.tank_width == 1.0);
+    assert_true(c.liquid_height == 0.2);
+    assert_true(c.liquid_length == 1.0); /* default: the tank length */
+    assert_true(c.liquid_x0 == 0.0 && c.liquid_y0 == 0.0);
+    assert_true(c.density == 1000.0 && c.viscosity == 1.0e-6);
+    assert_true(c.surface_tension == 0.0 && c.gravity == 9.81);
+    assert_int_equal(c.motion, MOTION_NONE);
+    assert_true(c.amplitude == 0.0 && c.period == 0.0 && c.decay == 0.0);
+    assert_true(c.phase == 0.0 && c.duration == 0.0);
+    assert_string_equal(c.motion_file, "");
+    assert_int_equal(c.scheme, SCHEME_DELTA_PLUS_ALE);
+    assert_int_equal(c.edbc, EDBC_ON);
+    assert_true(c.eta_threshold == 0.01);
+    assert_int_equal(c.eta_control, ETA_CONTROL_THRESHOLD);
+    assert_true(c.les);
+    assert_int_equal(c.wall, WALL_NO_SLIP);
+    assert_int_equal(c.resolution, 20);
+    assert_true(c.h_over_dr == 2.0); /* 2D default */
+    assert_true(c.sound_speed == 0.0 && c.cfl == 0.0); /* auto */
+    assert_int_equal(c.n_gauges, 0);
+    assert_int_equal(c.n_pressure_probes, 0);
+    assert_string_equal(c.output_dir, "out/inm1");
+    assert_true(c.timeseries_every == 0.0 && c.snapshot_every == 0.0 && c.image_every == 0.0);
+    assert_true(c.checkpoint_every == 600.0);
+    assert_false(c.graphical);
+}
+
+static void test_3d_default_h_over_dr(void **state)
+{
+    (void)state;
+    config c;
+    char err[ERR_LEN];
+    const char *set[] = {"case.dim=3"};
+    assert_int_equal(load_text(&c, MINIMAL, set, 1, err), 0);
+    assert_true(c.h_over_dr == 1.5);
+    const char *set2[] = {"case.dim=3", "numerics.h_over_dr=1.2"};
+    assert_int_equal(load_text(&c, MINIMAL, set2, 2, err), 0);
+    assert_true(c.h_over_dr == 1.2);
+}
+
+static void test_full_file(void **state)
+{
+    (void)state;
+    config c;
+    char err[ERR_LEN];
+    int rc = config_load(&c, DATA_DIR "/full.ini", NULL, 0, err, sizeof err);
+    if (rc) print_error("%s\n", err);
+    assert_int_equal(rc, 0);
+    assert_string_equal(c.name, "full-test");
+    assert_int_equal(c.dim, 3);
+    assert_true(c.t_end == 12.5);
+    assert_true(c.tank_length == 1.2 && c.tank_height == 0.6 && c.tank_width == 0.3);
+    assert_true(c.liquid_height == 0.25 && c.liquid_length == 0.8);
+    assert_true(c.liquid_x0 == 0.1 && c.liquid_y0 == 0.05);
+    assert_true(c.density == 998.2 && c.viscosity == 1.0e-5);
+    assert_true(c.surface_tension == 0.0728 && c.gravity == 9.80665);
+    assert_int_equal(c.motion, MOTION_TABLE);
+    assert_true(c.amplitude == 0.02 && c.period == 1.5 && c.decay == 0.1);
+    assert_true(c.phase == 0.5 && c.duration == 10.0);
+    /* Not readable from the test's directory, so found beside the case file. */
+    assert_true(strcmp(c.motion_file, DATA_DIR "/motion.csv") == 0 ||
+                strcmp(c.motion_file, "motion.csv") == 0);
+    assert_int_equal(c.scheme, SCHEME_DELTA_ALE);
+    assert_int_equal(c.edbc, EDBC_WITH_ETA0);
+    assert_true(c.eta_threshold == 0.02);
+    assert_int_equal(c.eta_control, ETA_CONTROL_ADAPTIVE);
+    assert_false(c.les);
+    assert_int_equal(c.wall, WALL_FREE_SLIP);
+    assert_int_equal(c.resolution, 40);
+    assert_true(c.h_over_dr == 1.8 && c.sound_speed == 25.0 && c.cfl == 1.5);
+    assert_int_equal(c.n_gauges, 3);
+    assert_true(c.gauges[0] == 0.1 && c.gauges[1] == 0.6 && c.gauges[2] == 1.1);
+    assert_int_equal(c.n_pressure_probes, 2);
+    assert_true(c.pressure_probes[0][0] == 0.0 && c.pressure_probes[0][1] == 0.1);
+    assert_true(c.pressure_probes[0][2] == 0.15 && c.pressure_probes[1][0] == 1.2);
+    assert_true(c.pressure_probes[1][1] == 0.2 && c.pressure_probes[1][2] == 0.15);
+    assert_string_equal(c.output_dir, "results/full-test-run");
+    assert_true(c.timeseries_every == 0.01 && c.snapshot_every == 0.5);
+    assert_true(c.image_every == 0.25 && c.checkpoint_every == 0.0);
+    assert_true(c.graphical);
+}
+
+/* BOM, CRLF, '#' and ';' comments, blank lines, indentation, "key: value" and an empty list
+ * are all plain INI that a hand-edited file may hold. */
+static void test_tolerated_syntax(void **state)
+{
+    (void)state;
+    const char *text = "\xEF\xBB\xBF# a comment\r\n[case] ; the case\r\n  t_end: 2\r\n\r\n"
+                       "[tank]\nlength = 1\nheight = 1\n[liquid]\nheight = 0.5\n"
+                       "[numerics]\nresolution = 10\ncfl = 2\n[probes]\ngauges =\n"
+                       "pressure = 0.5 0.5;0.25 0.25 ; two points\n";
+    config c;
+    char err[ERR_LEN];
+    int rc = load_text(&c, text, NULL, 0, err);
+    if (rc) print_error("%s\n", err);
+    assert_int_equal(rc, 0);
+    assert_true(c.t_end == 2.0 && c.cfl == 2.0);
+    assert_int_equal(c.n_gauges, 0);
+    assert_int_equal(c.n_pressure_probes, 2);
+    assert_true(c.pressure_probes[1][0] == 0.25 && c.pressure_probes[1][2] == 0.0);
+}
+
+static void test_overrides_in_order(void **state)
+{
+    (void)state;
+    config c;
+    char err[ERR_LEN];
+    /* The file lacks the required resolution: an override may give it. */
+    const char *text =
+        "[case]\nt_end = 1\n[tank]\nlength = 1\nheight = 1\n[liquid]\nheight = 0.5\n";
+    const char *set[] = {" numerics.resolution = 30 ", "model.scheme=delta",
+                         "model.scheme=standard",      "case.name=sap",
+                         "motion.type=sway",           "motion.period=1.25"};
+    int rc = load_text(&c, text, set, 6, err);
+    if (rc) print_error("%s\n", err);
+    assert_int_equal(rc, 0);
+    assert_int_equal(c.resolution, 30);
+    assert_int_equal(c.scheme, SCHEME_STANDARD); /* the last one wins */
+    assert_string_equal(c.output_dir, "out/sap"); /* the default follows the name */
+    assert_int_equal(c.motion, MOTION_SWAY);
+    assert_true(c.period == 1.25);
+}
+
+static void test_motion_file_from_current_directory(void **state)
+{
+    (void)state;
+    config c;
+    char err[ERR_LEN];
+    const char *set[] = {"motion.type=table", "motion.file=" DATA_DIR "/motion.csv"};
+    assert_int_equal(load_text(&c, MINIMAL, set, 2, err), 0);
+    assert_string_equal(c.motion_file, DATA_DIR "/motion.csv");
+}
+
+static void test_names(void **state)
+{
+    (void)state;
+    assert_string_equal(config_scheme_name(SCHEME_STANDARD), "standard");
+    assert_string_equal(config_scheme_name(SCHEME_DELTA), "delta");
+    assert_string_equal(config_scheme_name(SCHEME_DELTA_PLUS), "delta-plus");
+    assert_string_equal(config_scheme_name(SCHEME_DELTA_ALE), "delta-ale");
+    assert_string_equal(config_scheme_name(SCHEME_DELTA_PLUS_ALE), "delta-plus-ale");
+    assert_string_equal(config_motion_name(MOTION_NONE), "none");
+    assert_string_equal(config_motion_name(MOTION_SWAY), "sway");
+    assert_string_equal(config_motion_name(MOTION_HEAVE), "heave");
+    assert_string_equal(config_motion_name(MOTION_TABLE), "table");
+    assert_string_equal(config_edbc_name(EDBC_OFF), "false");
+    assert_string_equal(config_edbc_name(EDBC_ON), "true");
+    assert_string_equal(config_edbc_name(EDBC_WITH_ETA0), "with-eta0");
+    assert_string_equal(config_eta_control_name(ETA_CONTROL_THRESHOLD), "threshold");
+    assert_string_equal(config_eta_control_name(ETA_CONTROL_ADAPTIVE), "adaptive");
+    assert_string_equal(config_wall_name(WALL_NO_SLIP), "no-slip");
+    assert_string_equal(config_wall_name(WALL_FREE_SLIP), "free-slip");
+}
+
+/* ---- round trip --------------------------------------------------------------------------- */
+
+static char *written(const config *c)
+{
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&buf, &len);
+    assert_non_null(f);
+    config_write(c, f);
+    fclose(f);
+    return buf;
+}
+
+static void assert_round_trip(const config *a)
+{
+    char *text = written(a);
+    config b;
+    char err[ERR_LEN];
+    int rc = config_load_string(&b, text, "written", NULL, 0, err, sizeof err);
+    if (rc) print_error("%s\n%s", err, text);
+    assert_int_equal(rc, 0);
+    assert_memory_equal(a, &b, sizeof b);
+    free(text);
+}
+
+static void test_round_trip_minimal_and_full(void **state)
+{
+    (void)state;
+    config c;
+    char err[ERR_LEN];
+    assert_int_equal(config_load(&c, DATA_DIR "/minimal.ini", NULL, 0, err, sizeof err), 0);
+    assert_round_trip(&c);
+    assert_int_equal(config_load(&c, DATA_DIR "/full.ini", NULL, 0, err, sizeof err), 0);
+    assert_round_trip(&c);
+}
+
+/* Numbers that print badly with %g, a negative zero, a subnormal, and the most probes. */
+static void test_round_trip_awkward_values(void **state)
+{
+    (void)state;
+    config c;
+    char err[ERR_LEN];
+    const char *set[] = {"case.t_end=0.30000000000000004", "motion.phase=-0.0",
+                         "fluid.viscosity=5e-324", "motion.type=heave", "motion.period=0.1",
+                         "numerics.sound_speed=12.3456789012345678", "probes.gauges=0.1 0.2,0.3"};
+    int rc = load_text(&c, MINIMAL, set, 7, err);
+    if (rc) print_error("%s\n", err);
+    assert_int_equal(rc, 0);
+    assert_round_trip(&c);
+
+    static char points[65 * 80];
+    size_t used = 0;
+    for (int i = 0; i < CONFIG_PROBES_MAX; i++)
+        used += (size_t)snprintf(points + used, sizeof points - used,
+                                 "%s0.%d 0.1%d 0.123456789012345%d", i ? "; " : "", i + 1, i,
+                                 i % 10);
+    char text[sizeof points + 256];
+    snprintf(text, sizeof text, MINIMAL "[probes]\npressure = %s\n", points);
+    const char *three_d[] = {"case.dim=3"};
+    rc = load_text(&c, text, three_d, 1, err);
+    if (rc) print_error("%s\n", err);
+    assert_int_equal(rc, 0);
+    assert_int_equal(c.n_pressure_probes, CONFIG_PROBES_MAX);
+    assert_round_trip(&c);
+
+    snprintf(text, sizeof text, MINIMAL "[probes]\npressure = %s; 0.5 0.1 0.1\n", points);
+    assert_int_equal(load_text(&c, text, three_d, 1, err), 2);
+    assert_contains(err, "more than 64 pressure probes");
+}
+
+/* Every key of design §3 is written, each section once, in the design's order. */
+static void test_write_has_every_key(void **state)
+{
+    (void)state;
+    config c;
+    char err[ERR_LEN];
+    assert_int_equal(config_load(&c, DATA_DIR "/minimal.ini", NULL, 0, err, sizeof err), 0);
+    char *text = written(&c);
+    static const char *const order[] = {"[case]", "[tank]", "[liquid]", "[fluid]", "[motion]",
+                                        "[model]", "[numerics]", "[probes]", "[output]"};
+    const char *at = text;
+    for (size_t i = 0; i < sizeof order / sizeof order[0]; i++) {
+        const char *hit = strstr(at, order[i]);
+        assert_non_null(hit);
+        at = hit;
+    }
+    int n_keys = 0;
+    for (const char *line = text; line && *line; line = strchr(line, '\n')) {
+        if (*line == '\n') line++;
+        if (*line && *line != ';' && *line != '[' && *line != '\n') n_keys++;
+    }
+    assert_int_equal(n_keys, 39);
+    assert_non_null(strstr(text, "\nsound_speed      = auto ;"));
+    assert_non_null(strstr(text, "\nh_over_dr        = 2 ;"));
+    assert_non_null(strstr(text, "\nlength           = 1 ;"));
+    free(text);
+}
+
+/* ---- bad input: status 2 and one message with file, line and key ------------------------- */
+
+typedef struct {
+    const char *name;
+    const char *text;
+    const char *set[3];
+    int n_set;
+    const char *expect[4];
+} bad_case;
+
+/* A bad file without overrides: its name, its text, what the message must contain. */
+#define BAD(name, text, ...) {name, text, {0}, 0, {__VA_ARGS__}}
+
+static const bad_case bad_cases[] = {
+    BAD("unknown section", MINIMAL "[tnak]\nlength = 2\n",
+        "bad.ini:10: ", "unknown section [tnak]", "did you mean [tank]?"),
+    BAD("unknown empty section", MINIMAL "\n[outptu]\n",
+        "bad.ini:11: ", "[outptu]", "did you mean [output]?"),
+    BAD("unknown key", "[case]\nt_end = 1\n[tank]\nlenght = 1.0\n",
+        "bad.ini:4: ", "'tank.lenght'", "did you mean 'tank.length'?"),
+    BAD("unknown key, no hint", MINIMAL "[fluid]\ncolour = blue\n",
+        "bad.ini:11: ", "'fluid.colour'", "density, viscosity"),
+    BAD("key in the wrong section", MINIMAL "[tank]\ngravity = 9.81\n",
+        "bad.ini:11: ", "'tank.gravity'", "did you mean 'fluid.gravity'?"),
+    BAD("missing required key",
+        "[case]\nt_end = 1.0\n[tank]\nlength = 1.0\n[liquid]\nheight = 0.2\n"
+        "[numerics]\nresolution = 20\n",
+        "bad.ini:3: ", "tank.height", "missing", "required"),
+    BAD("missing section",
+        "[case]\nt_end = 1.0\n[tank]\nlength = 1.0\nheight = 0.5\n[liquid]\nheight = 0.2\n",
+        "bad.ini:0: ", "numerics.resolution", "missing", "required"),
+    BAD("bad number", "[case]\nt_end = 1\n[tank]\nlength = 1.0abc\n",
+        "bad.ini:4: ", "tank.length = 1.0abc", "not a finite number", "> 0 (m)"),
+    BAD("empty number", "[case]\nt_end =\n",
+        "bad.ini:2: ", "case.t_end = :", "not a finite number"),
+    BAD("infinite number", "[case]\nt_end = inf\n", "bad.ini:2: ", "case.t_end = inf"),
+    BAD("nan", "[case]\nt_end = nan\n", "bad.ini:2: ", "case.t_end = nan"),
+    BAD("overflowing number", "[case]\nt_end = 1e999\n", "bad.ini:2: ", "case.t_end = 1e999"),
+    BAD("negative length", "[case]\nt_end = 1\n[tank]\nlength = -1\n",
+        "bad.ini:4: tank.length = -1: must be a length > 0 (m)"),
+    BAD("zero t_end", "[case]\nt_end = 0\n", "bad.ini:2: ", "case.t_end = 0", "> 0 (s)"),
+    BAD("liquid higher than the tank",
+        "[case]\nt_end = 1.0\n[tank]\nlength = 1.0\nheight = 0.5\n[liquid]\nheight = 0.6\n"
+        "[numerics]\nresolution = 20\n",
+        "bad.ini:7: ", "liquid.height = 0.6", "liquid higher than the tank"),
+    BAD("liquid lifted out of the tank", MINIMAL "[liquid]\ny0 = 0.4\n",
+        "bad.ini:7: ", "liquid.height", "liquid higher than the tank"),
+    BAD("liquid longer than the tank", MINIMAL "[liquid]\nx0 = 0.5\n",
+        "bad.ini:11: ", "liquid.x0 = 0.5", "longer than the tank"),
+    BAD("negative x0", MINIMAL "[liquid]\nx0 = -0.1\n", "bad.ini:11: ", "liquid.x0", ">= 0"),
+    BAD("resolution below 4", "[case]\nt_end = 1.0\n[numerics]\nresolution = 3\n",
+        "bad.ini:4: ", "numerics.resolution = 3", "integer >= 4"),
+    BAD("resolution not an integer", "[numerics]\nresolution = 20.5\n",
+        "bad.ini:2: ", "numerics.resolution = 20.5", "not an integer"),
+    BAD("dim not 2 or 3", "[case]\ndim = 4\n", "bad.ini:2: ", "case.dim = 4", "2 or 3"),
+    BAD("unknown scheme", MINIMAL "[model]\nscheme = delta_plus\n",
+        "bad.ini:11: ", "model.scheme = delta_plus", "did you mean 'delta-plus'?",
+        "delta-plus-ale"),
+    BAD("unknown edbc", MINIMAL "[model]\nedbc = with_eta0\n",
+        "bad.ini:11: ", "model.edbc", "did you mean 'with-eta0'?"),
+    BAD("boolean yes", MINIMAL "[model]\nles = yes\n",
+        "bad.ini:11: ", "model.les = yes", "true or false"),
+    BAD("duplicate key", "[case]\nt_end = 1\nt_end = 2\n",
+        "bad.ini:3: ", "case.t_end", "first on line 2"),
+    BAD("density zero", MINIMAL "[fluid]\ndensity = 0\n", "bad.ini:11: ", "fluid.density = 0"),
+    BAD("viscosity zero", MINIMAL "[fluid]\nviscosity = 0\n", "bad.ini:11: ", "fluid.viscosity"),
+    BAD("negative gravity", MINIMAL "[fluid]\ngravity = -9.81\n", "bad.ini:11: ", "fluid.gravity"),
+    BAD("negative surface tension", MINIMAL "[fluid]\nsurface_tension = -1\n",
+        "bad.ini:11: ", "fluid.surface_tension"),
+    BAD("negative amplitude", MINIMAL "[motion]\namplitude = -1\n",
+        "bad.ini:11: ", "motion.amplitude"),
+    BAD("negative decay", MINIMAL "[motion]\ndecay = -1\n", "bad.ini:11: ", "motion.decay"),
+    BAD("negative duration", MINIMAL "[motion]\nduration = -1\n",
+        "bad.ini:11: ", "motion.duration"),
+    BAD("sway without period", MINIMAL "[motion]\ntype = sway\namplitude = 0.01\n",
+        "bad.ini:10: ", "motion.period", "missing", "> 0 (s) when motion.type = sway"),
+    BAD("heave with period 0", MINIMAL "[motion]\ntype = heave\nperiod = 0\n",
+        "bad.ini:12: ", "motion.period = 0", "when motion.type = heave"),
+    BAD("table without file", MINIMAL "[motion]\ntype = table\n",
+        "bad.ini:10: ", "motion.file", "required when motion.type = table"),
+    BAD("table with a missing file", MINIMAL "[motion]\ntype = table\nfile = no/such.csv\n",
+        "bad.ini:12: ", "motion.file = no/such.csv", "cannot read"),
+    BAD("eta_threshold 1", MINIMAL "[model]\neta_threshold = 1\n",
+        "bad.ini:11: ", "model.eta_threshold = 1", "(0, 1)"),
+    BAD("h_over_dr 5", MINIMAL "[numerics]\nh_over_dr = 5\n",
+        "bad.ini:11: ", "numerics.h_over_dr = 5", "[1, 4]"),
+    BAD("negative sound speed", MINIMAL "[numerics]\nsound_speed = -3\n",
+        "bad.ini:11: ", "numerics.sound_speed = -3", "auto or a speed > 0"),
+    BAD("cfl zero", MINIMAL "[numerics]\ncfl = 0\n", "bad.ini:11: ", "numerics.cfl = 0", "(0, 2]"),
+    BAD("cfl too large", MINIMAL "[numerics]\ncfl = 2.5\n", "bad.ini:11: ", "numerics.cfl = 2.5"),
+    BAD("negative output interval", MINIMAL "[output]\nsnapshot_every = -1\n",
+        "bad.ini:11: ", "output.snapshot_every"),
+    BAD("empty output dir", MINIMAL "[output]\ndir =\n", "bad.ini:11: ", "output.dir", "empty"),
+    BAD("bad case name", "[case]\nname = a/b\n", "bad.ini:2: ", "case.name = a/b"),
+    BAD("gauge outside the tank", MINIMAL "[probes]\ngauges = 0.5, 1.5\n",
+        "bad.ini:11: ", "probes.gauges", "gauge 2 at x = 1.5 m is outside the tank"),
+    BAD("gauge list with a stray comma", MINIMAL "[probes]\ngauges = 0.5,, 0.6\n",
+        "bad.ini:11: ", "probes.gauges", "unexpected ','"),
+    BAD("gauge list with ';'", MINIMAL "[probes]\ngauges = 0.5;0.6\n",
+        "bad.ini:11: ", "probes.gauges", "'0.5;0.6'"),
+    BAD("pressure point with 3 coordinates in 2D", MINIMAL "[probes]\npressure = 0.5 0.1 0.1\n",
+        "bad.ini:11: ", "probes.pressure = 0.5 0.1 0.1", "3 coordinates but case.dim = 2"),
+    BAD("pressure points of mixed sizes", MINIMAL "[probes]\npressure = 0.5 0.1; 0.5 0.1 0.1\n",
+        "bad.ini:11: ", "probes.pressure", "point 2 has 3 coordinates"),
+    BAD("pressure point outside the tank", MINIMAL "[probes]\npressure = 0.5 0.6\n",
+        "bad.ini:11: ", "probes.pressure", "y = 0.6 m is outside the tank"),
+    BAD("pressure points cut by a comment", MINIMAL "[probes]\npressure = 0.5 0.1 ; 0.6 0.1\n",
+        "bad.ini:11: ", "probes.pressure", "starts a comment"),
+    BAD("no multi-line values", MINIMAL "[probes]\ngauges = 0.1\n   0.3\n",
+        "bad.ini:12: ", "'0.3'", "expected [section], key = value"),
+    BAD("line without '='", MINIMAL "[fluid]\ndensity 1000\n", "bad.ini:11: ", "'density 1000'"),
+    BAD("section without ']'", MINIMAL "[fluid\n", "bad.ini:10: ", "'[fluid'", "closing ']'"),
+    BAD("text after a section header", MINIMAL "[fluid] density = 1\n",
+        "bad.ini:10: ", "after [fluid]"),
+    BAD("key before any section", "t_end = 1\n[case]\n",
+        "bad.ini:1: ", "'t_end'", "before any [section]"),
+    {"override without '='", MINIMAL, {"tank.length"}, 1,
+     {"--set tank.length", "section.key=value"}},
+    {"override without '.'", MINIMAL, {"length=2"}, 1, {"--set length=2", "section.key=value"}},
+    {"override of an unknown key", MINIMAL, {"tank.lenght=2"}, 1,
+     {"--set: ", "'tank.lenght'", "did you mean 'tank.length'?"}},
+    {"override of an unknown section", MINIMAL, {"tnak.length=2"}, 1,
+     {"--set: ", "[tnak]", "did you mean [tank]?"}},
+    {"override with a bad value", MINIMAL, {"numerics.resolution=20", "tank.length=-2"}, 2,
+     {"--set: tank.length = -2: must be a length > 0 (m)"}},
+    {"override that floods the tank", MINIMAL, {"liquid.height=0.9"}, 1,
+     {"--set: liquid.height = 0.9", "liquid higher than the tank"}},
+};
+#define N_BAD (sizeof bad_cases / sizeof bad_cases[0])
+
+static void test_bad(void **state)
+{
+    const bad_case *b = *state;
+    config c;
+    char err[ERR_LEN] = "";
+    assert_int_equal(load_text(&c, b->text, b->set, b->n_set, err), 2);
+    for (int i = 0; i < 4 && b->expect[i]; i++) assert_contains(err, b->expect[i]);
+    assert_null(strchr(err, '\n')); /* one message, one line */
+}
+
+static void test_line_too_long(void **state)
+{
+    (void)state;
+    static char text[10000];
+    int n = snprintf(text, sizeof text, MINIMAL "[probes]\ngauges = ");
+    memset(text + n, '1', sizeof text - (size_t)n - 2);
+    text[sizeof text - 2] = '\n';
+    config c;
+    char err[ERR_LEN];
+    assert_int_equal(load_text(&c, text, NULL, 0, err), 2);
+    assert_contains(err, "bad.ini:11: line longer than");
+}
+
+/* Messages about a real file name its path, and motion.file is found beside it. */
+static void test_errors_name_the_file(void **state)
+{
+    (void)state;
+    char dir[] = "/tmp/vcsph_test_config_XXXXXX";
+    assert_non_null(mkdtemp(dir));
+    char path[256], table[256];
+    snprintf(path, sizeof path, "%s/case.ini", dir);
+    snprintf(table, sizeof table, "%s/wave.csv", dir);
+    FILE *f = fopen(path, "w");
+    assert_non_null(f);
+    fputs("[case]\nt_end = 1\n\n[tank]  ; comment\nheight = 1\nlength = 1.0abc\n", f);
+    fclose(f);
+    config c;
+    char err[ERR_LEN], expect[300];
+    assert_int_equal(config_load(&c, path, NULL, 0, err, sizeof err), 2);
+    snprintf(expect, sizeof expect, "%s:6: tank.length = 1.0abc: ", path);
+    assert_contains(err, expect);
+
+    f = fopen(path, "w");
+    assert_non_null(f);
+    fputs(MINIMAL "[motion]\ntype = table\nfile = wave.csv\n", f);
+    fclose(f);
+    f = fopen(table, "w");
+    assert_non_null(f);
+    fputs("t,x,y\n0,0,0\n1,0,0\n2,0,0\n3,0,0\n", f);
+    fclose(f);
+    int rc = config_load(&c, path, NULL, 0, err, sizeof err);
+    if (rc) print_error("%s\n", err);
+    assert_int_equal(rc, 0);
+    assert_string_equal(c.motion_file, table);
+
+    unlink(table);
+    unlink(path);
+    rmdir(dir);
+    assert_int_equal(config_load(&c, path, NULL, 0, err, sizeof err), 2);
+    assert_contains(err, path);
+    assert_contains(err, "cannot open");
+    assert_int_equal(config_load(&c, "/tmp", NULL, 0, err, sizeof err), 2);
+    assert_contains(err, "/tmp: cannot read");
+}
+
+static void test_no_error_buffer(void **state)
+{
+    (void)state;
+    config c;
+    assert_int_equal(config_load_string(&c, "[nonsense]\n", NULL, NULL, 0, NULL, 0), 2);
+    assert_int_equal(config_load_string(&c, MINIMAL, NULL, NULL, 0, NULL, 0), 0);
+}
+
+int main(void)
+{
+    static const struct CMUnitTest fixed[] = {
+        cmocka_unit_test(test_minimal_gives_defaults),
+        cmocka_unit_test(test_3d_default_h_over_dr),
+        cmocka_unit_test(test_full_file),
+        cmocka_unit_test(test_tolerated_syntax),
+        cmocka_unit_test(test_overrides_in_order),
+        cmocka_unit_test(test_motion_file_from_current_directory),
+        cmocka_unit_test(test_names),
+        cmocka_unit_test(test_round_trip_minimal_and_full),
+        cmocka_unit_test(test_round_trip_awkward_values),
+        cmocka_unit_test(test_write_has_every_key),
+        cmocka_unit_test(test_line_too_long),
+        cmocka_unit_test(test_errors_name_the_file),
+        cmocka_unit_test(test_no_error_buffer),
+    };
+    enum { N_FIXED = sizeof fixed / sizeof fixed[0] };
+    static struct CMUnitTest tests[N_FIXED + N_BAD];
+    memcpy(tests, fixed, sizeof fixed);
+    for (size_t i = 0; i < N_BAD; i++)
+        tests[N_FIXED + i] = (struct CMUnitTest){.name = bad_cases[i].name,
+                                                 .test_func = test_bad,
+                                                 .initial_state = (void *)&bad_cases[i]};
+    return _cmocka_run_group_tests("test_config", tests, N_FIXED + N_BAD, NULL, NULL);
+}

@@ -1,0 +1,122 @@
+/* Each pair term of Eqs. (3)-(5) alone against a hand calculation, with the signs of
+ * theory §3 (grad_i W_ij = r_ji F_ij, F > 0). */
+#include "physics/continuity.h"
+#include "physics/diffusion.h"
+#include "physics/eos.h"
+#include "physics/pressure.h"
+#include "physics/viscosity.h"
+
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <cmocka.h>
+
+#include "check.h"
+
+static vec along_x(double a)
+{
+    vec v = vec_zero();
+    v.c[0] = a;
+    return v;
+}
+
+/* j at +x of i, approaching (u_ji = -1 m/s along x): -rho_i u_ji.r_ji F V_j > 0, density up */
+static void test_continuity(void **state)
+{
+    (void)state;
+    vec r_ji = along_x(0.02), u_ji = along_x(-1.0);
+    double rate = continuity_pair(1000.0, u_ji, r_ji, 3.0e4, 4.0e-4);
+    /* -1000 * (-1 * 0.02) * 3e4 * 4e-4 = 240 */
+    assert_close(rate, 240.0, 1e-12 * 240.0);
+    assert_true(rate > 0.0);
+    /* receding: density down */
+    assert_true(continuity_pair(1000.0, along_x(1.0), r_ji, 3.0e4, 4.0e-4) < 0.0);
+}
+
+/* positive pressures push i away from j (along -r_ji) */
+static void test_pressure(void **state)
+{
+    (void)state;
+    vec r_ji = along_x(0.02);
+    vec f = pressure_pair(100.0, 300.0, r_ji, 3.0e4, 4.0e-4);
+    /* -(100 + 300) * 3e4 * 4e-4 * 0.02 = -96 */
+    assert_close(f.c[0], -96.0, 1e-12 * 96.0);
+    for (int d = 1; d < DIM; d++) assert_true(f.c[d] == 0.0);
+}
+
+/* viscosity resists approach: u_ji . r_ji < 0 gives a force on i along -r_ji;
+ * a shear flow (u_ji normal to r_ji) gives no force along r_ji in this pair form */
+static void test_viscosity(void **state)
+{
+    (void)state;
+    vec r_ji = along_x(0.02), u_ji = along_x(-0.5);
+    double r2 = 0.02 * 0.02;
+    vec f = viscosity_pair(1e-3, u_ji, r_ji, r2, 3.0e4, 4.0e-4);
+    /* K = 2(n+2); pi = (-0.5 * 0.02) / 4e-4 = -25; K * 1e-3 * (-25) * 3e4 * 4e-4 * 0.02 */
+    double k_visc = 2.0 * (DIM + 2);
+    double expected = k_visc * 1e-3 * -25.0 * 3.0e4 * 4.0e-4 * 0.02;
+    assert_close(f.c[0], expected, 1e-12 * fabs(expected));
+    assert_true(f.c[0] < 0.0);
+    vec shear = vec_zero();
+    shear.c[1] = 1.0;
+    vec g = viscosity_pair(1e-3, shear, r_ji, r2, 3.0e4, 4.0e-4);
+    assert_true(g.c[0] == 0.0);
+}
+
+/* D^rho pair: diffuses the difference left after removing the linear (gradient) part; a
+ * linear density field (gradients equal to its slope) gives zero */
+static void test_diffusion(void **state)
+{
+    (void)state;
+    vec r_ji = along_x(0.02), slope = along_x(50.0);
+    double linear = diffusion_rho_pair(0.01, 1000.0, 1001.0, slope, slope, r_ji, 3.0e4, 4.0e-4);
+    assert_close(linear, 0.0, 1e-12);
+    vec flat = vec_zero();
+    double d = diffusion_rho_pair(0.01, 1000.0, 1002.0, flat, flat, r_ji, 3.0e4, 4.0e-4);
+    /* 2 * 0.01 * 2 * 3e4 * 4e-4 = 0.48, towards the higher neighbour */
+    assert_close(d, 0.48, 1e-12);
+    assert_close(diffusion_coefficient(6.0, 0.04, 2.0), (6.0 * 0.04) * (6.0 * 0.04) * 2.0, 1e-15);
+}
+
+static void test_harmonic_mean_and_caps(void **state)
+{
+    (void)state;
+    assert_close(harmonic_mean_capped(1.0, 3.0, 10.0), 1.5, 1e-15);
+    assert_true(harmonic_mean_capped(0.0, 0.0, 10.0) == 0.0);
+    assert_true(harmonic_mean_capped(0.0, 5.0, 10.0) == 0.0);
+    assert_close(harmonic_mean_capped(100.0, 100.0, 10.0), 10.0, 0.0);
+}
+
+/* y+ = sqrt(u_t y / nu); f = 1 - exp(-y+/26); eddy viscosity (C_S l f)^2 ||D|| */
+static void test_eddy_viscosity(void **state)
+{
+    (void)state;
+    double yplus = sqrt(0.1 * 0.002 / 1e-6); /* 14.14 */
+    assert_close(van_driest_factor(0.002, 0.1, 1e-6), 1.0 - exp(-yplus / 26.0), 1e-15);
+    assert_true(van_driest_factor(0.0, 1.0, 1e-6) == 0.0);
+    assert_close(eddy_viscosity(0.04, 1.0, 3.0), (0.18 * 0.04) * (0.18 * 0.04) * 3.0, 1e-18);
+}
+
+/* p = c0^2 (rho - rho0); e(rho) >= 0 with its minimum 0 at rho0, and de/drho = p/rho^2 */
+static void test_eos(void **state)
+{
+    (void)state;
+    assert_close(eos_pressure(1001.0, 1000.0, 20.0), 400.0, 1e-9);
+    assert_close(eos_density(400.0, 1000.0, 20.0), 1001.0, 1e-12);
+    assert_true(eos_internal_energy(1000.0, 1000.0, 20.0) == 0.0);
+    double rho = 1010.0, eps = 1e-4;
+    double de = (eos_internal_energy(rho + eps, 1000.0, 20.0) -
+                 eos_internal_energy(rho - eps, 1000.0, 20.0)) / (2 * eps);
+    assert_close(de, eos_pressure(rho, 1000.0, 20.0) / (rho * rho), 1e-8);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_continuity),     cmocka_unit_test(test_pressure),
+        cmocka_unit_test(test_viscosity),      cmocka_unit_test(test_diffusion),
+        cmocka_unit_test(test_harmonic_mean_and_caps), cmocka_unit_test(test_eddy_viscosity),
+        cmocka_unit_test(test_eos),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

@@ -1,0 +1,818 @@
+/* Unit tests of io/snapshot: HDF5 snapshots read back through the HDF5 library, and the
+ * XDMF index checked against the files it points at. */
+#ifndef _POSIX_C_SOURCE
+#define _POSIX_C_SOURCE 200809L /* mkdtemp, dup, dup2 */
+#endif
+
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include <cmocka.h>
+
+#include <dirent.h>
+#include <fcntl.h>
+#include <float.h>
+#include <hdf5.h>
+#include <math.h>
+#include <stdbool.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "io/snapshot.h"
+
+/* ---------------------------------------------------------------------------------------- */
+/* Fixture: a fresh directory under /tmp per test, removed afterwards                         */
+
+typedef struct {
+    char dir[64];
+    char path[512]; /* scratch for path_in */
+} fixture;
+
+static int setup(void **state)
+{
+    fixture *fx = calloc(1, sizeof *fx);
+    if (!fx)
+        return -1;
+    strcpy(fx->dir, "/tmp/vcsph_snapshot_XXXXXX");
+    if (!mkdtemp(fx->dir)) {
+        free(fx);
+        return -1;
+    }
+    *state = fx;
+    return 0;
+}
+
+static int teardown(void **state)
+{
+    fixture *fx = *state;
+    DIR *d = opendir(fx->dir);
+    if (d) {
+        char p[512];
+        for (struct dirent *e; (e = readdir(d));) {
+            if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0)
+                continue;
+            snprintf(p, sizeof p, "%s/%s", fx->dir, e->d_name);
+            if (unlink(p) != 0)
+                rmdir(p); /* the rename-onto-a-directory test leaves an empty directory */
+        }
+        closedir(d);
+    }
+    rmdir(fx->dir);
+    free(fx);
+    return 0;
+}
+
+static const char *path_in(fixture *fx, const char *name)
+{
+    snprintf(fx->path, sizeof fx->path, "%s/%s", fx->dir, name);
+    return fx->path;
+}
+
+static bool exists(const char *path)
+{
+    return access(path, F_OK) == 0;
+}
+
+static int count_entries(const char *dir)
+{
+    DIR *d = opendir(dir);
+    int n = 0;
+    for (struct dirent *e; d && (e = readdir(d));)
+        n += strcmp(e->d_name, ".") != 0 && strcmp(e->d_name, "..") != 0;
+    if (d)
+        closedir(d);
+    return n;
+}
+
+/* ---------------------------------------------------------------------------------------- */
+/* Sample particle data: every field type, scalar and vector                                  */
+
+enum { SMALL = 7, N_SAMPLE_FIELDS = 7 };
+
+typedef struct {
+    size_t n;
+    int dim;
+    double pos[3][SMALL], vel[3][SMALL], rho[SMALL];
+    int64_t id[SMALL], cell[3][SMALL];
+    int32_t surface[SMALL], flags[3][SMALL];
+    snapshot_field fields[N_SAMPLE_FIELDS];
+    snapshot_attrs attrs;
+} sample;
+
+static void sample_fill(sample *s, int dim, size_t n, double shift)
+{
+    memset(s, 0, sizeof *s);
+    s->n = n;
+    s->dim = dim;
+    /* Edge values, so "exact" means bit for bit: signed zero, subnormal, extremes, NaN, inf. */
+    const double special[SMALL] = {-0.0, 4.9406564584124654e-324, DBL_MAX, -DBL_MAX,
+                                   NAN,  INFINITY,                1.0 / 3.0};
+    const int64_t special64[SMALL] = {INT64_MIN, INT64_MAX, -1, 0, 1, 1LL << 40, 42};
+    const int32_t special32[SMALL] = {INT32_MIN, INT32_MAX, -1, 0, 1, 2, 1 << 20};
+    for (size_t i = 0; i < SMALL; ++i) {
+        for (int c = 0; c < 3; ++c) {
+            s->pos[c][i] = shift + (double)i + 0.125 * c;
+            s->vel[c][i] = -0.5 * (double)i + 10.0 * c + shift;
+            s->cell[c][i] = (int64_t)(100 * i + (size_t)c) - 300;
+            s->flags[c][i] = (int32_t)(c * 10 + (int)i) - 20;
+        }
+        s->rho[i] = special[i];
+        s->id[i] = special64[i];
+        s->surface[i] = special32[i];
+    }
+    const snapshot_field f[N_SAMPLE_FIELDS] = {
+        {"id", FIELD_INT64, 1, {s->id}},
+        {"position", FIELD_DOUBLE, dim, {s->pos[0], s->pos[1], s->pos[2]}},
+        {"velocity", FIELD_DOUBLE, dim, {s->vel[0], s->vel[1], s->vel[2]}},
+        {"density", FIELD_DOUBLE, 1, {s->rho}},
+        {"surface", FIELD_INT32, 1, {s->surface}},
+        {"cell", FIELD_INT64, dim, {s->cell[0], s->cell[1], s->cell[2]}},
+        {"flags", FIELD_INT32, dim, {s->flags[0], s->flags[1], s->flags[2]}},
+    };
+    memcpy(s->fields, f, sizeof f);
+    s->attrs = (snapshot_attrs){.time = 0.1 + shift,
+                                .step = 123456789012L,
+                                .eta = 0.015625,
+                                .dim = dim,
+                                .dr = 1.0 / 30.0,
+                                .h = 2.0 / 30.0,
+                                .case_text = "[case]\nname = \"sap\"\n[numerics]\nresolution = 30\n"};
+}
+
+static int sample_write(const sample *s, const char *path, char *err, size_t err_len)
+{
+    return snapshot_write(path, s->n, s->fields, N_SAMPLE_FIELDS, &s->attrs, err, err_len);
+}
+
+/* ---------------------------------------------------------------------------------------- */
+/* Reading back                                                                              */
+
+static size_t elem_size(field_type t)
+{
+    return t == FIELD_INT32 ? 4 : 8;
+}
+
+static hid_t expected_file_type(field_type t)
+{
+    return t == FIELD_DOUBLE ? H5T_IEEE_F64LE : t == FIELD_INT64 ? H5T_STD_I64LE : H5T_STD_I32LE;
+}
+
+static hid_t mem_type(field_type t)
+{
+    return t == FIELD_DOUBLE ? H5T_NATIVE_DOUBLE
+                             : t == FIELD_INT64 ? H5T_NATIVE_INT64 : H5T_NATIVE_INT32;
+}
+
+/* Opens a dataset and checks its shape (n, or n x ncomp) and stored type. */
+static hid_t open_checked(hid_t file, const char *name, field_type type, size_t n, int ncomp)
+{
+    hid_t dset = H5Dopen2(file, name, H5P_DEFAULT);
+    assert_true(dset >= 0);
+    hid_t space = H5Dget_space(dset);
+    hsize_t dims[2] = {0, 0};
+    const int rank = H5Sget_simple_extent_dims(space, dims, NULL);
+    H5Sclose(space);
+    assert_int_equal(rank, ncomp > 1 ? 2 : 1);
+    assert_int_equal(dims[0], n);
+    if (ncomp > 1)
+        assert_int_equal(dims[1], ncomp);
+    hid_t ftype = H5Dget_type(dset);
+    assert_true(H5Tequal(ftype, expected_file_type(type)) > 0);
+    H5Tclose(ftype);
+    return dset;
+}
+
+/* Reads a field back and compares every element bit for bit with the SoA input. */
+static void check_field(hid_t file, const snapshot_field *f, size_t n)
+{
+    hid_t dset = open_checked(file, f->name, f->type, n, f->ncomp);
+    const size_t es = elem_size(f->type), nc = (size_t)f->ncomp;
+    unsigned char *buf = malloc(n * nc * es + 1);
+    assert_non_null(buf);
+    if (n > 0)
+        assert_true(H5Dread(dset, mem_type(f->type), H5S_ALL, H5S_ALL, H5P_DEFAULT, buf) >= 0);
+    for (size_t i = 0; i < n; ++i)
+        for (size_t c = 0; c < nc; ++c)
+            assert_memory_equal(buf + (i * nc + c) * es,
+                                (const unsigned char *)f->component[c] + i * es, es);
+    free(buf);
+    H5Dclose(dset);
+}
+
+/* The connectivity the XDMF index uses: 0 .. n-1 as int32. */
+static void check_vertices(hid_t file, size_t n)
+{
+    hid_t dset = open_checked(file, SNAPSHOT_VERTICES_DATASET, FIELD_INT32, n, 1);
+    int32_t *v = malloc((n + 1) * sizeof *v);
+    assert_non_null(v);
+    if (n > 0)
+        assert_true(H5Dread(dset, H5T_NATIVE_INT32, H5S_ALL, H5S_ALL, H5P_DEFAULT, v) >= 0);
+    for (size_t i = 0; i < n; ++i)
+        assert_int_equal(v[i], (int32_t)i);
+    free(v);
+    H5Dclose(dset);
+}
+
+static void read_attr(hid_t file, const char *name, hid_t file_type, hid_t mtype, void *out)
+{
+    hid_t attr = H5Aopen(file, name, H5P_DEFAULT);
+    assert_true(attr >= 0);
+    hid_t t = H5Aget_type(attr);
+    assert_true(H5Tequal(t, file_type) > 0);
+    H5Tclose(t);
+    assert_true(H5Aread(attr, mtype, out) >= 0);
+    H5Aclose(attr);
+}
+
+static void check_attrs(hid_t file, const snapshot_attrs *a)
+{
+    double time, eta, dr, h;
+    long step;
+    int dim;
+    read_attr(file, "time", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &time);
+    read_attr(file, "step", H5T_STD_I64LE, H5T_NATIVE_LONG, &step);
+    read_attr(file, "eta", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &eta);
+    read_attr(file, "dim", H5T_STD_I32LE, H5T_NATIVE_INT, &dim);
+    read_attr(file, "dr", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &dr);
+    read_attr(file, "h", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &h);
+    assert_memory_equal(&time, &a->time, sizeof time);
+    assert_int_equal(step, a->step);
+    assert_memory_equal(&eta, &a->eta, sizeof eta);
+    assert_int_equal(dim, a->dim);
+    assert_memory_equal(&dr, &a->dr, sizeof dr);
+    assert_memory_equal(&h, &a->h, sizeof h);
+
+    hid_t attr = H5Aopen(file, "case", H5P_DEFAULT);
+    assert_true(attr >= 0);
+    hid_t t = H5Aget_type(attr);
+    assert_int_equal(H5Tget_class(t), H5T_STRING);
+    assert_false(H5Tis_variable_str(t));
+    const size_t size = H5Tget_size(t);
+    char *text = calloc(size + 1, 1);
+    assert_non_null(text);
+    assert_true(H5Aread(attr, t, text) >= 0);
+    assert_string_equal(text, a->case_text ? a->case_text : "");
+    free(text);
+    H5Tclose(t);
+    H5Aclose(attr);
+}
+
+/* Reads a whole snapshot back and checks it against the sample. */
+static void check_sample_file(const char *path, const sample *s)
+{
+    hid_t file = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT);
+    assert_true(file >= 0);
+    check_attrs(file, &s->attrs);
+    for (int i = 0; i < N_SAMPLE_FIELDS; ++i)
+        check_field(file, &s->fields[i], s->n);
+    check_vertices(file, s->n);
+    H5Fclose(file);
+}
+
+/* Every identifier the writer opened must be closed again: a leak would keep the file open
+ * (and unflushed) behind our back. */
+static void assert_no_open_hdf5_objects(void)
+{
+    assert_int_equal(H5Fget_obj_count((hid_t)H5F_OBJ_ALL, H5F_OBJ_ALL), 0);
+}
+
+/* ---------------------------------------------------------------------------------------- */
+/* snapshot_write                                                                            */
+
+static void roundtrip(fixture *fx, int dim)
+{
+    sample s;
+    sample_fill(&s, dim, SMALL, 0.0);
+    char err[256] = "";
+    const char *path = path_in(fx, "000000.h5");
+    assert_int_equal(sample_write(&s, path, err, sizeof err), 0);
+    assert_no_open_hdf5_objects();
+    check_sample_file(path, &s);
+    assert_false(exists(path_in(fx, "000000.h5.tmp")));
+    assert_int_equal(count_entries(fx->dir), 1);
+}
+
+static void test_write_2d_roundtrip(void **state)
+{
+    roundtrip(*state, 2);
+}
+
+static void test_write_3d_roundtrip(void **state)
+{
+    roundtrip(*state, 3);
+}
+
+/* More rows than one interleaving block holds (8192), with a partial last block, so the
+ * block boundaries are covered too. */
+static void test_write_many_rows(void **state)
+{
+    fixture *fx = *state;
+    const size_t n = 2 * 8192 + 17;
+    double *x[3];
+    int32_t *k[2];
+    for (int c = 0; c < 3; ++c) {
+        x[c] = malloc(n * sizeof *x[c]);
+        assert_non_null(x[c]);
+    }
+    for (int c = 0; c < 2; ++c) {
+        k[c] = malloc(n * sizeof *k[c]);
+        assert_non_null(k[c]);
+    }
+    for (size_t i = 0; i < n; ++i) {
+        for (int c = 0; c < 3; ++c)
+            x[c][i] = (double)i * 0.001 + c;
+        for (int c = 0; c < 2; ++c)
+            k[c][i] = (int32_t)i * (c ? -1 : 1);
+    }
+    const snapshot_field f[] = {
+        {"position", FIELD_DOUBLE, 3, {x[0], x[1], x[2]}},
+        {"pair", FIELD_INT32, 2, {k[0], k[1]}},
+    };
+    const snapshot_attrs a = {.dim = 3, .case_text = ""};
+    char err[256] = "";
+    const char *path = path_in(fx, "big.h5");
+    assert_int_equal(snapshot_write(path, n, f, 2, &a, err, sizeof err), 0);
+    hid_t file = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT);
+    assert_true(file >= 0);
+    check_field(file, &f[0], n);
+    check_field(file, &f[1], n);
+    check_vertices(file, n);
+    H5Fclose(file);
+    for (int c = 0; c < 3; ++c)
+        free(x[c]);
+    for (int c = 0; c < 2; ++c)
+        free(k[c]);
+}
+
+/* n = 0: every dataset exists with zero rows; the component pointers are never read. */
+static void test_write_empty(void **state)
+{
+    fixture *fx = *state;
+    const snapshot_field f[] = {
+        {"id", FIELD_INT64, 1, {NULL}},
+        {"position", FIELD_DOUBLE, 2, {NULL, NULL}},
+        {"surface", FIELD_INT32, 1, {NULL}},
+    };
+    const snapshot_attrs a = {.time = 1.5, .step = 3, .dim = 2, .case_text = NULL};
+    char err[256] = "";
+    const char *path = path_in(fx, "empty.h5");
+    assert_int_equal(snapshot_write(path, 0, f, 3, &a, err, sizeof err), 0);
+    assert_no_open_hdf5_objects();
+    hid_t file = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT);
+    assert_true(file >= 0);
+    check_attrs(file, &a); /* a NULL case text is stored as "" */
+    for (int i = 0; i < 3; ++i)
+        check_field(file, &f[i], 0);
+    check_vertices(file, 0);
+    H5Fclose(file);
+}
+
+/* A second write to the same path replaces the file whole. */
+static void test_write_replaces_existing(void **state)
+{
+    fixture *fx = *state;
+    sample a, b;
+    sample_fill(&a, 2, SMALL, 0.0);
+    sample_fill(&b, 2, 3, 7.0);
+    char err[256] = "";
+    const char *path = path_in(fx, "s.h5");
+    assert_int_equal(sample_write(&a, path, err, sizeof err), 0);
+    assert_int_equal(sample_write(&b, path, err, sizeof err), 0);
+    check_sample_file(path, &b);
+    assert_int_equal(count_entries(fx->dir), 1);
+}
+
+static void test_unwritable_path(void **state)
+{
+    fixture *fx = *state;
+    sample s;
+    sample_fill(&s, 2, SMALL, 0.0);
+    char err[256] = "";
+    const char *path = path_in(fx, "no/such/dir/s.h5");
+    assert_int_equal(sample_write(&s, path, err, sizeof err), -1);
+    assert_true(strlen(err) > 0);
+    assert_non_null(strstr(err, "no/such/dir/s.h5.tmp"));
+    assert_int_equal(count_entries(fx->dir), 0);
+    assert_no_open_hdf5_objects();
+}
+
+/* A failure after the temporary file exists (here: two fields with the same name) removes
+ * the temporary file and leaves the previous snapshot untouched. */
+static void test_failure_keeps_previous_file(void **state)
+{
+    fixture *fx = *state;
+    sample good, bad;
+    sample_fill(&good, 3, SMALL, 0.0);
+    sample_fill(&bad, 3, SMALL, 1.0);
+    bad.fields[2].name = "position";
+    char err[256] = "";
+    const char *path = path_in(fx, "s.h5");
+    assert_int_equal(sample_write(&good, path, err, sizeof err), 0);
+    assert_int_equal(sample_write(&bad, path, err, sizeof err), -1);
+    assert_non_null(strstr(err, "'position': ")); /* with HDF5's reason after the colon */
+    assert_no_open_hdf5_objects();
+    check_sample_file(path_in(fx, "s.h5"), &good);
+    assert_false(exists(path_in(fx, "s.h5.tmp")));
+    assert_int_equal(count_entries(fx->dir), 1);
+}
+
+/* The rename is the last step: when it fails (target is a directory) nothing is left but
+ * what was there before. */
+static void test_rename_failure_cleans_up(void **state)
+{
+    fixture *fx = *state;
+    assert_int_equal(mkdir(path_in(fx, "taken.h5"), 0700), 0);
+    sample s;
+    sample_fill(&s, 2, SMALL, 0.0);
+    char err[256] = "";
+    assert_int_equal(sample_write(&s, path_in(fx, "taken.h5"), err, sizeof err), -1);
+    assert_non_null(strstr(err, "rename"));
+    assert_false(exists(path_in(fx, "taken.h5.tmp")));
+    assert_int_equal(count_entries(fx->dir), 1);
+}
+
+static void test_bad_fields_rejected(void **state)
+{
+    fixture *fx = *state;
+    const double x[2] = {0, 1};
+    const snapshot_attrs a = {.dim = 2};
+    const snapshot_field null_component[] = {{"density", FIELD_DOUBLE, 2, {x, NULL}}};
+    const snapshot_field bad_ncomp[] = {{"density", FIELD_DOUBLE, 4, {x, x, x}}};
+    const snapshot_field reserved[] = {{SNAPSHOT_VERTICES_DATASET, FIELD_INT32, 1, {x}}};
+    const snapshot_field no_name[] = {{"", FIELD_DOUBLE, 1, {x}}};
+    const snapshot_field *cases[] = {null_component, bad_ncomp, reserved, no_name};
+    const char *path = path_in(fx, "s.h5");
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; ++i) {
+        char err[256] = "";
+        assert_int_equal(snapshot_write(path, 2, cases[i], 1, &a, err, sizeof err), -1);
+        assert_true(strlen(err) > 0);
+    }
+    assert_int_equal(count_entries(fx->dir), 0);
+}
+
+/* HDF5's automatic error printing is off during the call (errors go to err) and restored
+ * afterwards. */
+static void test_hdf5_errors_not_printed(void **state)
+{
+    fixture *fx = *state;
+    H5E_auto2_t func_before = NULL, func_after = NULL;
+    void *data_before = NULL, *data_after = NULL;
+    H5Eget_auto2(H5E_DEFAULT, &func_before, &data_before);
+
+    char capture[512];
+    snprintf(capture, sizeof capture, "%s/stderr.txt", fx->dir);
+    fflush(stderr);
+    const int saved = dup(STDERR_FILENO);
+    const int fd = open(capture, O_WRONLY | O_CREAT | O_TRUNC, 0600);
+    assert_true(saved >= 0 && fd >= 0);
+    dup2(fd, STDERR_FILENO);
+    close(fd);
+
+    sample s;
+    sample_fill(&s, 2, SMALL, 0.0);
+    char err[256] = "";
+    const int rc = sample_write(&s, path_in(fx, "missing/s.h5"), err, sizeof err);
+
+    fflush(stderr);
+    dup2(saved, STDERR_FILENO);
+    close(saved);
+    assert_int_equal(rc, -1);
+    struct stat st;
+    assert_int_equal(stat(capture, &st), 0);
+    assert_int_equal(st.st_size, 0);
+
+    H5Eget_auto2(H5E_DEFAULT, &func_after, &data_after);
+    assert_true(func_before == func_after);
+    assert_true(data_before == data_after);
+}
+
+/* ---------------------------------------------------------------------------------------- */
+/* snapshot_write_xdmf                                                                       */
+
+static char *slurp(const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    assert_non_null(f);
+    fseek(f, 0, SEEK_END);
+    const long len = ftell(f);
+    fseek(f, 0, SEEK_SET);
+    char *text = malloc((size_t)len + 1);
+    assert_non_null(text);
+    assert_int_equal(fread(text, 1, (size_t)len, f), (size_t)len);
+    text[len] = '\0';
+    fclose(f);
+    return text;
+}
+
+/* Balanced, properly nested tags (a small stand-in for an XML parser): skips the <?xml?>
+ * declaration, treats <x/> as closed. Attribute values never hold '<' or '>' because the
+ * writer escapes them. */
+static bool xml_balanced(const char *s)
+{
+    const char *open_name[32];
+    size_t open_len[32];
+    int depth = 0;
+    for (const char *p = strchr(s, '<'); p; p = strchr(p + 1, '<')) {
+        const char *end = strchr(p, '>');
+        if (!end)
+            return false;
+        if (p[1] == '?')
+            continue;
+        if (p[1] == '/') {
+            const size_t len = strcspn(p + 2, " >");
+            if (depth == 0 || open_len[depth - 1] != len ||
+                strncmp(open_name[depth - 1], p + 2, len) != 0)
+                return false;
+            --depth;
+        } else if (end[-1] != '/') {
+            if (depth == 32)
+                return false;
+            open_name[depth] = p + 1;
+            open_len[depth] = strcspn(p + 1, " />\n");
+            ++depth;
+        }
+    }
+    return depth == 0;
+}
+
+/* Value of attribute `name` inside the tag [tag, end), copied into out. */
+static bool tag_attr(const char *tag, const char *end, const char *name, char *out, size_t len)
+{
+    char key[64];
+    snprintf(key, sizeof key, " %s=\"", name);
+    const char *v = strstr(tag, key);
+    if (!v || v > end)
+        return false;
+    v += strlen(key);
+    const size_t n = strcspn(v, "\"");
+    if (n >= len)
+        return false;
+    memcpy(out, v, n);
+    out[n] = '\0';
+    return true;
+}
+
+/* Follows one <DataItem> to its HDF5 dataset and checks that the declared Dimensions,
+ * NumberType and Precision are what the file holds: what ParaView relies on. */
+static void check_data_item(fixture *fx, const char *tag, const char *end)
+{
+    char dims[64], number_type[16], precision[8], format[8];
+    assert_true(tag_attr(tag, end, "Dimensions", dims, sizeof dims));
+    assert_true(tag_attr(tag, end, "NumberType", number_type, sizeof number_type));
+    assert_true(tag_attr(tag, end, "Precision", precision, sizeof precision));
+    assert_true(tag_attr(tag, end, "Format", format, sizeof format));
+    assert_string_equal(format, "HDF");
+
+    const char *ref = end + 1;
+    const char *sep = strstr(ref, ":/");
+    assert_non_null(sep);
+    char file_name[128], dset_name[64];
+    const size_t flen = (size_t)(sep - ref), dlen = strcspn(sep + 2, "<");
+    assert_true(flen < sizeof file_name && dlen < sizeof dset_name);
+    memcpy(file_name, ref, flen);
+    file_name[flen] = '\0';
+    memcpy(dset_name, sep + 2, dlen);
+    dset_name[dlen] = '\0';
+
+    hid_t file = H5Fopen(path_in(fx, file_name), H5F_ACC_RDONLY, H5P_DEFAULT);
+    assert_true(file >= 0);
+    hid_t dset = H5Dopen2(file, dset_name, H5P_DEFAULT);
+    assert_true(dset >= 0);
+    hid_t space = H5Dget_space(dset);
+    hsize_t d[2] = {0, 0};
+    const int rank = H5Sget_simple_extent_dims(space, d, NULL);
+    char actual[64];
+    if (rank == 1)
+        snprintf(actual, sizeof actual, "%llu", (unsigned long long)d[0]);
+    else
+        snprintf(actual, sizeof actual, "%llu %llu", (unsigned long long)d[0],
+                 (unsigned long long)d[1]);
+    assert_string_equal(dims, actual);
+    hid_t type = H5Dget_type(dset);
+    assert_string_equal(number_type, H5Tget_class(type) == H5T_FLOAT ? "Float" : "Int");
+    assert_int_equal(atoi(precision), H5Tget_size(type));
+    H5Tclose(type);
+    H5Sclose(space);
+    H5Dclose(dset);
+    H5Fclose(file);
+}
+
+static int check_all_data_items(fixture *fx, const char *xml)
+{
+    int count = 0;
+    for (const char *p = strstr(xml, "<DataItem "); p; p = strstr(p + 1, "<DataItem ")) {
+        const char *end = strchr(p, '>');
+        assert_non_null(end);
+        check_data_item(fx, p, end);
+        ++count;
+    }
+    return count;
+}
+
+static void check_times(const char *xml, const double *times, int n)
+{
+    const char *p = xml;
+    for (int k = 0; k < n; ++k) {
+        p = strstr(p, "<Time Value=\"");
+        assert_non_null(p);
+        p += strlen("<Time Value=\"");
+        const double t = strtod(p, NULL);
+        assert_memory_equal(&t, &times[k], sizeof t); /* %.17g round-trips exactly */
+    }
+    assert_null(strstr(p, "<Time "));
+}
+
+/* The optional external check: only where xmllint happens to be installed. */
+static void xmllint_if_available(const char *path)
+{
+    if (access("/usr/bin/xmllint", X_OK) != 0)
+        return;
+    char cmd[640];
+    snprintf(cmd, sizeof cmd, "/usr/bin/xmllint --noout '%s'", path);
+    assert_int_equal(system(cmd), 0);
+}
+
+/* Writes snapshots with the sample fields and the XDMF index over them. */
+static char *write_series(fixture *fx, int dim, const double *times, const size_t *counts,
+                          const char *const *files, int n)
+{
+    sample s;
+    char err[256] = "";
+    for (int k = 0; k < n; ++k) {
+        sample_fill(&s, dim, counts[k], times[k]);
+        assert_int_equal(sample_write(&s, path_in(fx, files[k]), err, sizeof err), 0);
+    }
+    sample_fill(&s, dim, SMALL, 0.0);
+    const char *xmf = path_in(fx, "snapshots.xmf");
+    assert_int_equal(snapshot_write_xdmf(xmf, n, files, times, counts, s.fields,
+                                         N_SAMPLE_FIELDS, dim, err, sizeof err),
+                     0);
+    assert_false(exists(path_in(fx, "snapshots.xmf.tmp")));
+    xmllint_if_available(path_in(fx, "snapshots.xmf"));
+    return slurp(path_in(fx, "snapshots.xmf"));
+}
+
+static void test_xdmf_2d(void **state)
+{
+    fixture *fx = *state;
+    const char *files[] = {"000000.h5", "000001.h5", "000002.h5"};
+    const double times[] = {0.0, 0.1, 0.30000000000000004};
+    const size_t counts[] = {SMALL, 5, 0};
+    char *xml = write_series(fx, 2, times, counts, files, 3);
+
+    assert_non_null(strstr(xml, "<Xdmf Version=\"3.0\">"));
+    assert_non_null(strstr(xml, "GridType=\"Collection\" CollectionType=\"Temporal\""));
+    assert_non_null(strstr(xml, "<Time Value=\"0.10000000000000001\"/>"));
+    assert_non_null(strstr(xml, "<Time Value=\"0.30000000000000004\"/>"));
+    assert_non_null(strstr(xml, "TopologyType=\"Polyvertex\" NumberOfElements=\"5\""
+                                " NodesPerElement=\"1\""));
+    assert_non_null(strstr(xml, "<Geometry GeometryType=\"XY\">"));
+    assert_null(strstr(xml, "\"XYZ\""));
+    assert_non_null(strstr(xml, "Precision=\"8\" Dimensions=\"5 2\">000001.h5:/position<"));
+    assert_non_null(strstr(xml, "<Attribute Name=\"velocity\" AttributeType=\"Vector\""
+                                " Center=\"Node\">"));
+    assert_non_null(strstr(xml, "<Attribute Name=\"density\" AttributeType=\"Scalar\""
+                                " Center=\"Node\">"));
+    assert_non_null(strstr(xml, "NumberType=\"Int\" Precision=\"8\" Dimensions=\"7\">"
+                                "000000.h5:/id<"));
+    assert_non_null(strstr(xml, "NumberType=\"Int\" Precision=\"4\" Dimensions=\"5\">"
+                                "000001.h5:/surface<"));
+    assert_non_null(strstr(xml, "NumberType=\"Float\" Precision=\"8\" Dimensions=\"7 2\">"
+                                "000000.h5:/velocity<"));
+    assert_non_null(strstr(xml, "Dimensions=\"0\">000002.h5:/" SNAPSHOT_VERTICES_DATASET "<"));
+    assert_null(strstr(xml, "Attribute Name=\"position\""));
+    assert_true(xml_balanced(xml));
+    check_times(xml, times, 3);
+    /* per snapshot: topology + geometry + one attribute per non-position field */
+    assert_int_equal(check_all_data_items(fx, xml), 3 * (1 + N_SAMPLE_FIELDS));
+    free(xml);
+}
+
+static void test_xdmf_3d(void **state)
+{
+    fixture *fx = *state;
+    const char *files[] = {"a.h5", "b.h5"};
+    const double times[] = {1e-3, 2.5};
+    const size_t counts[] = {4, SMALL};
+    char *xml = write_series(fx, 3, times, counts, files, 2);
+
+    assert_non_null(strstr(xml, "<Geometry GeometryType=\"XYZ\">"));
+    assert_non_null(strstr(xml, "Dimensions=\"4 3\">a.h5:/position<"));
+    assert_non_null(strstr(xml, "Dimensions=\"7 3\">b.h5:/velocity<"));
+    assert_non_null(strstr(xml, "NumberType=\"Int\" Precision=\"4\" Dimensions=\"7 3\">"
+                                "b.h5:/flags<"));
+    assert_non_null(strstr(xml, "<Time Value=\"0.001\"/>"));
+    assert_non_null(strstr(xml, "<Time Value=\"2.5\"/>"));
+    assert_true(xml_balanced(xml));
+    check_times(xml, times, 2);
+    assert_int_equal(check_all_data_items(fx, xml), 2 * (1 + N_SAMPLE_FIELDS));
+    free(xml);
+}
+
+/* Rewriting the index (as a run does after each snapshot) replaces it whole; names with XML
+ * special characters are escaped. */
+static void test_xdmf_rewrite_and_escaping(void **state)
+{
+    fixture *fx = *state;
+    sample s;
+    sample_fill(&s, 2, SMALL, 0.0);
+    const char *files[] = {"a&b.h5", "<c>.h5"};
+    const double times[] = {0.0, 1.0};
+    const size_t counts[] = {SMALL, SMALL};
+    char err[256] = "";
+    const char *xmf = path_in(fx, "s.xmf");
+    assert_int_equal(snapshot_write_xdmf(xmf, 1, files, times, counts, s.fields,
+                                         N_SAMPLE_FIELDS, 2, err, sizeof err),
+                     0);
+    xmf = path_in(fx, "s.xmf");
+    assert_int_equal(snapshot_write_xdmf(xmf, 2, files, times, counts, s.fields,
+                                         N_SAMPLE_FIELDS, 2, err, sizeof err),
+                     0);
+    char *xml = slurp(path_in(fx, "s.xmf"));
+    assert_non_null(strstr(xml, ">a&amp;b.h5:/density<"));
+    assert_non_null(strstr(xml, ">&lt;c&gt;.h5:/density<"));
+    assert_null(strstr(xml, "a&b"));
+    assert_true(xml_balanced(xml));
+    check_times(xml, times, 2);
+    assert_int_equal(count_entries(fx->dir), 1);
+    free(xml);
+}
+
+/* An empty series is still a valid document ParaView can open (no time steps). */
+static void test_xdmf_no_snapshots(void **state)
+{
+    fixture *fx = *state;
+    sample s;
+    sample_fill(&s, 3, SMALL, 0.0);
+    char err[256] = "";
+    const char *xmf = path_in(fx, "s.xmf");
+    assert_int_equal(snapshot_write_xdmf(xmf, 0, NULL, NULL, NULL, s.fields, N_SAMPLE_FIELDS, 3,
+                                         err, sizeof err),
+                     0);
+    char *xml = slurp(path_in(fx, "s.xmf"));
+    assert_true(xml_balanced(xml));
+    assert_null(strstr(xml, "<Time "));
+    free(xml);
+}
+
+static void test_xdmf_errors(void **state)
+{
+    fixture *fx = *state;
+    sample s;
+    sample_fill(&s, 2, SMALL, 0.0);
+    const char *files[] = {"a.h5"};
+    const double times[] = {0.0};
+    const size_t counts[] = {SMALL};
+    char err[256] = "";
+
+    /* no position field */
+    assert_int_equal(snapshot_write_xdmf(path_in(fx, "s.xmf"), 1, files, times, counts,
+                                         s.fields + 2, N_SAMPLE_FIELDS - 2, 2, err, sizeof err),
+                     -1);
+    assert_non_null(strstr(err, "position"));
+    /* position has 2 components, not 3 */
+    err[0] = '\0';
+    assert_int_equal(snapshot_write_xdmf(path_in(fx, "s.xmf"), 1, files, times, counts, s.fields,
+                                         N_SAMPLE_FIELDS, 3, err, sizeof err),
+                     -1);
+    assert_true(strlen(err) > 0);
+    err[0] = '\0';
+    assert_int_equal(snapshot_write_xdmf(path_in(fx, "s.xmf"), 1, files, times, counts, s.fields,
+                                         N_SAMPLE_FIELDS, 4, err, sizeof err),
+                     -1);
+    assert_true(strlen(err) > 0);
+    /* unwritable place */
+    err[0] = '\0';
+    assert_int_equal(snapshot_write_xdmf(path_in(fx, "none/s.xmf"), 1, files, times, counts,
+                                         s.fields, N_SAMPLE_FIELDS, 2, err, sizeof err),
+                     -1);
+    assert_non_null(strstr(err, "none/s.xmf.tmp"));
+    assert_int_equal(count_entries(fx->dir), 0);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test_setup_teardown(test_write_2d_roundtrip, setup, teardown),
+        cmocka_unit_test_setup_teardown(test_write_3d_roundtrip, setup, teardown),
+        cmocka_unit_test_setup_teardown(test_write_many_rows, setup, teardown),
+        cmocka_unit_test_setup_teardown(test_write_empty, setup, teardown),
+        cmocka_unit_test_setup_teardown(test_write_replaces_existing, setup, teardown),
+        cmocka_unit_test_setup_teardown(test_unwritable_path, setup, teardown),
+        cmocka_unit_test_setup_teardown(test_failure_keeps_previous_file, setup, teardown),
+        cmocka_unit_test_setup_teardown(test_rename_failure_cleans_up, setup, teardown),
+        cmocka_unit_test_setup_teardown(test_bad_fields_rejected, setup, teardown),
+        cmocka_unit_test_setup_teardown(test_hdf5_errors_not_printed, setup, teardown),
+        cmocka_unit_test_setup_teardown(test_xdmf_2d, setup, teardown),
+        cmocka_unit_test_setup_teardown(test_xdmf_3d, setup, teardown),
+        cmocka_unit_test_setup_teardown(test_xdmf_rewrite_and_escaping, setup, teardown),
+        cmocka_unit_test_setup_teardown(test_xdmf_no_snapshots, setup, teardown),
+        cmocka_unit_test_setup_teardown(test_xdmf_errors, setup, teardown),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
