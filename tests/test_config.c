@@ -10,8 +10,11 @@
 
 #include <stdio.h>
 #include <stdlib.h>
+#include <dirent.h>
 #include <string.h>
 #include <unistd.h>
+
+#include <ini.h>
 
 #include "core/config.h"
 
@@ -508,6 +511,41 @@ static void test_no_error_buffer(void **state)
     assert_int_equal(config_load_string(&c, MINIMAL, NULL, NULL, 0, NULL, 0), 0);
 }
 
+/* The case files shipped in cases/ follow the schema and survive the round trip. */
+static void test_repo_cases_load(void **state)
+{
+    (void)state;
+    DIR *dir = opendir(VCSPH_SOURCE_DIR "/cases");
+    if (!dir) skip();
+    for (struct dirent *e; (e = readdir(dir));) {
+        size_t n = strlen(e->d_name);
+        if (n < 5 || strcmp(e->d_name + n - 4, ".ini") != 0) continue;
+        char path[1024];
+        snprintf(path, sizeof path, "%s/cases/%s", VCSPH_SOURCE_DIR, e->d_name);
+        config c;
+        char err[ERR_LEN];
+        int rc = config_load(&c, path, NULL, 0, err, sizeof err);
+        if (rc) print_error("%s\n", err);
+        assert_int_equal(rc, 0);
+        assert_round_trip(&c);
+    }
+    closedir(dir);
+}
+
+/* inih's options are library globals: the parser sets its own and puts the old ones back. */
+static void test_inih_options_restored(void **state)
+{
+    (void)state;
+    bool multiline = ini_allow_multiline;
+    int max_line = ini_max_line;
+    config c;
+    char err[ERR_LEN];
+    assert_int_equal(load_text(&c, MINIMAL, NULL, 0, err), 0);
+    assert_int_equal(load_text(&c, "[bad\n", NULL, 0, err), 2);
+    assert_int_equal(ini_allow_multiline, multiline);
+    assert_int_equal(ini_max_line, max_line);
+}
+
 int main(void)
 {
     static const struct CMUnitTest fixed[] = {
@@ -524,6 +562,8 @@ int main(void)
         cmocka_unit_test(test_line_too_long),
         cmocka_unit_test(test_errors_name_the_file),
         cmocka_unit_test(test_no_error_buffer),
+        cmocka_unit_test(test_inih_options_restored),
+        cmocka_unit_test(test_repo_cases_load),
     };
     enum { N_FIXED = sizeof fixed / sizeof fixed[0] };
     static struct CMUnitTest tests[N_FIXED + N_BAD];

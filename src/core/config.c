@@ -943,12 +943,13 @@ static void parse_input(parse_ctx *ctx)
 
 /* ---- overrides ---------------------------------------------------------------------------- */
 
-/* Copies [s, s+n) without surrounding white space. */
-static void copy_trimmed(char *dst, size_t size, const char *s, size_t n)
+/* Copies [s, s+n) without surrounding white space; false if it had to be cut to fit. */
+static bool copy_trimmed(char *dst, size_t size, const char *s, size_t n)
 {
     while (n > 0 && isspace((unsigned char)*s)) s++, n--;
     while (n > 0 && isspace((unsigned char)s[n - 1])) n--;
     snprintf(dst, size, "%.*s", (int)n, s);
+    return n < size;
 }
 
 static void apply_override(parse_ctx *ctx, const char *arg)
@@ -971,7 +972,11 @@ static void apply_override(parse_ctx *ctx, const char *arg)
         fail_unknown_key(ctx, "--set", section, name);
         return;
     }
-    copy_trimmed(ctx->line, sizeof ctx->line, eq + 1, strlen(eq + 1));
+    if (!copy_trimmed(ctx->line, sizeof ctx->line, eq + 1, strlen(eq + 1))) {
+        fail(ctx, "--set: %s.%s: value longer than %zu characters", section, name,
+             sizeof ctx->line - 1);
+        return;
+    }
     apply(ctx, k, ctx->line, LINE_SET);
 }
 
@@ -1082,11 +1087,11 @@ static void check_motion(parse_ctx *ctx)
         fail_key(ctx, file, "required when motion.type = table: a CSV file t,x,y[,z]");
         return;
     }
-    char given[CONFIG_PATH_MAX];
-    snprintf(given, sizeof given, "%s", cfg->motion_file);
-    if (!locate_table(given, ctx->case_path, cfg->motion_file, sizeof cfg->motion_file)) {
+    char as_given[CONFIG_PATH_MAX];
+    snprintf(as_given, sizeof as_given, "%s", cfg->motion_file);
+    if (!locate_table(as_given, ctx->case_path, cfg->motion_file, sizeof cfg->motion_file)) {
         snprintf(why, sizeof why,
-                 "cannot read '%s' (looked from the current directory%s); must be %s", given,
+                 "cannot read '%s' (looked from the current directory%s); must be %s", as_given,
                  ctx->case_path ? " and beside the case file" : "", file->allowed);
         fail_key(ctx, file, why);
     }
@@ -1107,11 +1112,11 @@ static void check_probes(parse_ctx *ctx)
     }
     if (ctx->point_coords && ctx->point_coords != cfg->dim) {
         /* Shown with the coordinates as given: formatting for dim would drop or invent some. */
-        char given[CASE_LINE_MAX];
-        format_point_list(cfg, ctx->point_coords, given, sizeof given);
+        char as_given[CASE_LINE_MAX];
+        format_point_list(cfg, ctx->point_coords, as_given, sizeof as_given);
         snprintf(why, sizeof why, "points have %d coordinates but case.dim = %d; write %s",
                  ctx->point_coords, cfg->dim, cfg->dim == 3 ? "'x y z'" : "'x y'");
-        fail_value(ctx, pressure, ctx->key_line[pressure - keys], given, why);
+        fail_value(ctx, pressure, ctx->key_line[pressure - keys], as_given, why);
         return;
     }
     const double size[3] = {cfg->tank_length, cfg->tank_height, cfg->tank_width};
