@@ -153,6 +153,7 @@ int neighbours_build(neighbour_list *nl, const cell_grid *g, double *const x[DIM
         size_t need = (n_rows ? n_rows : 1) * nl->row_capacity;
         if (need > nl->index_capacity) {
             free(nl->index);
+            nl->index_capacity = 0;
             nl->index = malloc(need * sizeof *nl->index);
             if (!nl->index) return -1;
             nl->index_capacity = need;

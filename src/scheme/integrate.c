@@ -124,15 +124,16 @@ int solver_step(solver *s, double t_stop)
     double work = 0.0;
     for (int stage = 0; stage < 4; stage++) {
         double ts = s->t + stage_c[stage] * dt, c = stage_c[stage] * dt;
-        if (stage > 0) {
+        vec g_eff = solver_g_eff(s, ts);
+        if (stage > 0) { /* stage 0 is the state build_neighbours has just prepared */
 #pragma omp parallel for schedule(static)
             for (size_t i = 0; i < n; i++)
                 for (int v = 0; v < RK_VARS; v++) y[v][i] = s->y0[v][i] + c * rate[v][i];
+            solver_update_eos(s);
+            tank_refresh_ghosts(&s->tank, p, g_eff, s->pp.rho0, s->pp.c0);
+        } else {
+            fields_compute(&s->pp, &s->tank, p, &s->nl, g_eff);
         }
-        vec g_eff = solver_g_eff(s, ts);
-        solver_update_eos(s);
-        tank_refresh_ghosts(&s->tank, p, g_eff, s->pp.rho0, s->pp.c0);
-        if (stage == 0) fields_compute(&s->pp, &s->tank, p, &s->nl, g_eff);
         rhs_compute(&s->pp, p, &s->nl, g_eff, &s->k);
         if (stage == 0) s->max_acc = max_acceleration(s);
         work += stage_w[stage] * input_power(s, ts);
