@@ -39,7 +39,8 @@ static inline int table_read(table *t, const char *path)
     while (fgets(line, sizeof line, f)) {
         if (t->n_rows == cap) {
             cap = cap ? 2 * cap : 256;
-            for (int c = 0; c < t->n_columns; c++) t->column[c] = realloc(t->column[c], cap * sizeof(double));
+            for (int c = 0; c < t->n_columns; c++)
+                t->column[c] = realloc(t->column[c], cap * sizeof(double));
         }
         char *s = line;
         for (int c = 0; c < t->n_columns; c++) {

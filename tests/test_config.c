@@ -22,12 +22,12 @@
 #error "VCSPH_SOURCE_DIR must name the source tree (CMake defines it)"
 #endif
 #define DATA_DIR VCSPH_SOURCE_DIR "/tests/data/config"
-#define ERR_LEN 1024
+#define ERR_LEN  1024
 
 /* Lines: 1 [case], 2 t_end, 3 [tank], 4 length, 5 height, 6 [liquid], 7 height, 8 [numerics],
  * 9 resolution. The bad cases below are variations of it. */
-#define MINIMAL                                                                                \
-    "[case]\nt_end = 1.0\n[tank]\nlength = 1.0\nheight = 0.5\n[liquid]\nheight = 0.2\n"        \
+#define MINIMAL                                                                                    \
+    "[case]\nt_end = 1.0\n[tank]\nlength = 1.0\nheight = 0.5\n[liquid]\nheight = 0.2\n"            \
     "[numerics]\nresolution = 20\n"
 
 static int load_text(config *cfg, const char *text, const char *const *ov, int n, char *err)
@@ -73,7 +73,7 @@ static void test_minimal_gives_defaults(void **state)
     assert_true(c.les);
     assert_int_equal(c.wall, WALL_NO_SLIP);
     assert_int_equal(c.resolution, 20);
-    assert_true(c.h_over_dr == 2.0); /* 2D default */
+    assert_true(c.h_over_dr == 2.0);                   /* 2D default */
     assert_true(c.sound_speed == 0.0 && c.cfl == 0.0); /* auto */
     assert_int_equal(c.n_gauges, 0);
     assert_int_equal(c.n_pressure_probes, 0);
@@ -173,7 +173,7 @@ static void test_overrides_in_order(void **state)
     if (rc) print_error("%s\n", err);
     assert_int_equal(rc, 0);
     assert_int_equal(c.resolution, 30);
-    assert_int_equal(c.scheme, SCHEME_STANDARD); /* the last one wins */
+    assert_int_equal(c.scheme, SCHEME_STANDARD);  /* the last one wins */
     assert_string_equal(c.output_dir, "out/sap"); /* the default follows the name */
     assert_int_equal(c.motion, MOTION_SWAY);
     assert_true(c.period == 1.25);
@@ -252,9 +252,13 @@ static void test_round_trip_awkward_values(void **state)
     (void)state;
     config c;
     char err[ERR_LEN];
-    const char *set[] = {"case.t_end=0.30000000000000004", "motion.phase=-0.0",
-                         "fluid.viscosity=5e-324", "motion.type=heave", "motion.period=0.1",
-                         "numerics.sound_speed=12.3456789012345678", "probes.gauges=0.1 0.2,0.3"};
+    const char *set[] = {"case.t_end=0.30000000000000004",
+                         "motion.phase=-0.0",
+                         "fluid.viscosity=5e-324",
+                         "motion.type=heave",
+                         "motion.period=0.1",
+                         "numerics.sound_speed=12.3456789012345678",
+                         "probes.gauges=0.1 0.2,0.3"};
     int rc = load_text(&c, MINIMAL, set, 7, err);
     if (rc) print_error("%s\n", err);
     assert_int_equal(rc, 0);
@@ -263,9 +267,9 @@ static void test_round_trip_awkward_values(void **state)
     static char points[65 * 80];
     size_t used = 0;
     for (int i = 0; i < CONFIG_PROBES_MAX; i++)
-        used += (size_t)snprintf(points + used, sizeof points - used,
-                                 "%s0.%d 0.1%d 0.123456789012345%d", i ? "; " : "", i + 1, i,
-                                 i % 10);
+        used +=
+            (size_t)snprintf(points + used, sizeof points - used,
+                             "%s0.%d 0.1%d 0.123456789012345%d", i ? "; " : "", i + 1, i, i % 10);
     char text[sizeof points + 256];
     snprintf(text, sizeof text, MINIMAL "[probes]\npressure = %s\n", points);
     const char *three_d[] = {"case.dim=3"};
@@ -288,7 +292,7 @@ static void test_write_has_every_key(void **state)
     char err[ERR_LEN];
     assert_int_equal(config_load(&c, DATA_DIR "/minimal.ini", NULL, 0, err, sizeof err), 0);
     char *text = written(&c);
-    static const char *const order[] = {"[case]", "[tank]", "[liquid]", "[fluid]", "[motion]",
+    static const char *const order[] = {"[case]",  "[tank]",     "[liquid]", "[fluid]", "[motion]",
                                         "[model]", "[numerics]", "[probes]", "[output]"};
     const char *at = text;
     for (size_t i = 0; i < sizeof order / sizeof order[0]; i++) {
@@ -319,15 +323,18 @@ typedef struct {
 } bad_case;
 
 /* A bad file without overrides: its name, its text, what the message must contain. */
-#define BAD(name, text, ...) {name, text, {0}, 0, {__VA_ARGS__}}
+#define BAD(name, text, ...)                                                                       \
+    {                                                                                              \
+        name, text, {0}, 0, { __VA_ARGS__ }                                                        \
+    }
 
 static const bad_case bad_cases[] = {
-    BAD("unknown section", MINIMAL "[tnak]\nlength = 2\n",
-        "bad.ini:10: ", "unknown section [tnak]", "did you mean [tank]?"),
-    BAD("unknown empty section", MINIMAL "\n[outptu]\n",
-        "bad.ini:11: ", "[outptu]", "did you mean [output]?"),
-    BAD("unknown key", "[case]\nt_end = 1\n[tank]\nlenght = 1.0\n",
-        "bad.ini:4: ", "'tank.lenght'", "did you mean 'tank.length'?"),
+    BAD("unknown section", MINIMAL "[tnak]\nlength = 2\n", "bad.ini:10: ", "unknown section [tnak]",
+        "did you mean [tank]?"),
+    BAD("unknown empty section", MINIMAL "\n[outptu]\n", "bad.ini:11: ", "[outptu]",
+        "did you mean [output]?"),
+    BAD("unknown key", "[case]\nt_end = 1\n[tank]\nlenght = 1.0\n", "bad.ini:4: ", "'tank.lenght'",
+        "did you mean 'tank.length'?"),
     BAD("unknown key, no hint", MINIMAL "[fluid]\ncolour = blue\n",
         "bad.ini:11: ", "'fluid.colour'", "density, viscosity"),
     BAD("key in the wrong section", MINIMAL "[tank]\ngravity = 9.81\n",
@@ -363,15 +370,14 @@ static const bad_case bad_cases[] = {
     BAD("resolution not an integer", "[numerics]\nresolution = 20.5\n",
         "bad.ini:2: ", "numerics.resolution = 20.5", "not an integer"),
     BAD("dim not 2 or 3", "[case]\ndim = 4\n", "bad.ini:2: ", "case.dim = 4", "2 or 3"),
-    BAD("unknown scheme", MINIMAL "[model]\nscheme = delta_plus\n",
-        "bad.ini:11: ", "model.scheme = delta_plus", "did you mean 'delta-plus'?",
-        "delta-plus-ale"),
-    BAD("unknown edbc", MINIMAL "[model]\nedbc = with_eta0\n",
-        "bad.ini:11: ", "model.edbc", "did you mean 'with-eta0'?"),
-    BAD("boolean yes", MINIMAL "[model]\nles = yes\n",
-        "bad.ini:11: ", "model.les = yes", "true or false"),
-    BAD("duplicate key", "[case]\nt_end = 1\nt_end = 2\n",
-        "bad.ini:3: ", "case.t_end", "first on line 2"),
+    BAD("unknown scheme", MINIMAL "[model]\nscheme = delta_plus\n", "bad.ini:11: ",
+        "model.scheme = delta_plus", "did you mean 'delta-plus'?", "delta-plus-ale"),
+    BAD("unknown edbc", MINIMAL "[model]\nedbc = with_eta0\n", "bad.ini:11: ", "model.edbc",
+        "did you mean 'with-eta0'?"),
+    BAD("boolean yes", MINIMAL "[model]\nles = yes\n", "bad.ini:11: ", "model.les = yes",
+        "true or false"),
+    BAD("duplicate key", "[case]\nt_end = 1\nt_end = 2\n", "bad.ini:3: ", "case.t_end",
+        "first on line 2"),
     BAD("density zero", MINIMAL "[fluid]\ndensity = 0\n", "bad.ini:11: ", "fluid.density = 0"),
     BAD("viscosity zero", MINIMAL "[fluid]\nviscosity = 0\n", "bad.ini:11: ", "fluid.viscosity"),
     BAD("negative gravity", MINIMAL "[fluid]\ngravity = -9.81\n", "bad.ini:11: ", "fluid.gravity"),
@@ -386,8 +392,8 @@ static const bad_case bad_cases[] = {
         "bad.ini:10: ", "motion.period", "missing", "> 0 (s) when motion.type = sway"),
     BAD("heave with period 0", MINIMAL "[motion]\ntype = heave\nperiod = 0\n",
         "bad.ini:12: ", "motion.period = 0", "when motion.type = heave"),
-    BAD("table without file", MINIMAL "[motion]\ntype = table\n",
-        "bad.ini:10: ", "motion.file", "required when motion.type = table"),
+    BAD("table without file", MINIMAL "[motion]\ntype = table\n", "bad.ini:10: ", "motion.file",
+        "required when motion.type = table"),
     BAD("table with a missing file", MINIMAL "[motion]\ntype = table\nfile = no/such.csv\n",
         "bad.ini:12: ", "motion.file = no/such.csv", "cannot read"),
     BAD("eta_threshold 1", MINIMAL "[model]\neta_threshold = 1\n",
@@ -416,24 +422,39 @@ static const bad_case bad_cases[] = {
         "bad.ini:11: ", "probes.pressure", "y = 0.6 m is outside the tank"),
     BAD("pressure points cut by a comment", MINIMAL "[probes]\npressure = 0.5 0.1 ; 0.6 0.1\n",
         "bad.ini:11: ", "probes.pressure", "starts a comment"),
-    BAD("no multi-line values", MINIMAL "[probes]\ngauges = 0.1\n   0.3\n",
-        "bad.ini:12: ", "'0.3'", "expected [section], key = value"),
+    BAD("no multi-line values", MINIMAL "[probes]\ngauges = 0.1\n   0.3\n", "bad.ini:12: ", "'0.3'",
+        "expected [section], key = value"),
     BAD("line without '='", MINIMAL "[fluid]\ndensity 1000\n", "bad.ini:11: ", "'density 1000'"),
     BAD("section without ']'", MINIMAL "[fluid\n", "bad.ini:10: ", "'[fluid'", "closing ']'"),
     BAD("text after a section header", MINIMAL "[fluid] density = 1\n",
         "bad.ini:10: ", "after [fluid]"),
-    BAD("key before any section", "t_end = 1\n[case]\n",
-        "bad.ini:1: ", "'t_end'", "before any [section]"),
-    {"override without '='", MINIMAL, {"tank.length"}, 1,
+    BAD("key before any section", "t_end = 1\n[case]\n", "bad.ini:1: ", "'t_end'",
+        "before any [section]"),
+    {"override without '='",
+     MINIMAL,
+     {"tank.length"},
+     1,
      {"--set tank.length", "section.key=value"}},
     {"override without '.'", MINIMAL, {"length=2"}, 1, {"--set length=2", "section.key=value"}},
-    {"override of an unknown key", MINIMAL, {"tank.lenght=2"}, 1,
+    {"override of an unknown key",
+     MINIMAL,
+     {"tank.lenght=2"},
+     1,
      {"--set: ", "'tank.lenght'", "did you mean 'tank.length'?"}},
-    {"override of an unknown section", MINIMAL, {"tnak.length=2"}, 1,
+    {"override of an unknown section",
+     MINIMAL,
+     {"tnak.length=2"},
+     1,
      {"--set: ", "[tnak]", "did you mean [tank]?"}},
-    {"override with a bad value", MINIMAL, {"numerics.resolution=20", "tank.length=-2"}, 2,
+    {"override with a bad value",
+     MINIMAL,
+     {"numerics.resolution=20", "tank.length=-2"},
+     2,
      {"--set: tank.length = -2: must be a length > 0 (m)"}},
-    {"override that floods the tank", MINIMAL, {"liquid.height=0.9"}, 1,
+    {"override that floods the tank",
+     MINIMAL,
+     {"liquid.height=0.9"},
+     1,
      {"--set: liquid.height = 0.9", "liquid higher than the tank"}},
 };
 #define N_BAD (sizeof bad_cases / sizeof bad_cases[0])

@@ -38,7 +38,8 @@ static void add(particles *p, const double x[3])
 static size_t ghosts_of(const particles *p, size_t i)
 {
     size_t k = 0;
-    for (size_t g = p->n_fluid; g < p->n_total; g++) k += (size_t)p->ghost_source[g - p->n_fluid] == i;
+    for (size_t g = p->n_fluid; g < p->n_total; g++)
+        k += (size_t)p->ghost_source[g - p->n_fluid] == i;
     return k;
 }
 
@@ -48,9 +49,9 @@ static void test_counts(void **state)
     particles p;
     particles_init(&p, 8);
     tank t = make_tank();
-    add(&p, (double[3]){0.5, 0.4, 0.3});   /* interior */
-    add(&p, (double[3]){0.05, 0.4, 0.3});  /* near the wall x = 0 */
-    add(&p, (double[3]){0.96, 0.75, 0.3}); /* 2D: corner x = L, y = D; 3D: that edge */
+    add(&p, (double[3]){0.5, 0.4, 0.3});    /* interior */
+    add(&p, (double[3]){0.05, 0.4, 0.3});   /* near the wall x = 0 */
+    add(&p, (double[3]){0.96, 0.75, 0.3});  /* 2D: corner x = L, y = D; 3D: that edge */
     add(&p, (double[3]){0.05, 0.03, 0.58}); /* 2D: corner; 3D: corner of three walls */
     assert_int_equal(tank_make_ghosts(&t, &p, reach), 0);
     assert_int_equal(ghosts_of(&p, 0), 0);

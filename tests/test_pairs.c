@@ -106,16 +106,20 @@ static void test_eos(void **state)
     assert_true(eos_internal_energy(1000.0, 1000.0, 20.0) == 0.0);
     double rho = 1010.0, eps = 1e-4;
     double de = (eos_internal_energy(rho + eps, 1000.0, 20.0) -
-                 eos_internal_energy(rho - eps, 1000.0, 20.0)) / (2 * eps);
+                 eos_internal_energy(rho - eps, 1000.0, 20.0)) /
+                (2 * eps);
     assert_close(de, eos_pressure(rho, 1000.0, 20.0) / (rho * rho), 1e-8);
 }
 
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_continuity),     cmocka_unit_test(test_pressure),
-        cmocka_unit_test(test_viscosity),      cmocka_unit_test(test_diffusion),
-        cmocka_unit_test(test_harmonic_mean_and_caps), cmocka_unit_test(test_eddy_viscosity),
+        cmocka_unit_test(test_continuity),
+        cmocka_unit_test(test_pressure),
+        cmocka_unit_test(test_viscosity),
+        cmocka_unit_test(test_diffusion),
+        cmocka_unit_test(test_harmonic_mean_and_caps),
+        cmocka_unit_test(test_eddy_viscosity),
         cmocka_unit_test(test_eos),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

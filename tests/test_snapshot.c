@@ -36,8 +36,7 @@ typedef struct {
 static int setup(void **state)
 {
     fixture *fx = calloc(1, sizeof *fx);
-    if (!fx)
-        return -1;
+    if (!fx) return -1;
     strcpy(fx->dir, "/tmp/vcsph_snapshot_XXXXXX");
     if (!mkdtemp(fx->dir)) {
         free(fx);
@@ -54,8 +53,7 @@ static int teardown(void **state)
     if (d) {
         char p[512];
         for (struct dirent *e; (e = readdir(d));) {
-            if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0)
-                continue;
+            if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0) continue;
             snprintf(p, sizeof p, "%s/%s", fx->dir, e->d_name);
             if (unlink(p) != 0)
                 rmdir(p); /* the rename-onto-a-directory test leaves an empty directory */
@@ -73,10 +71,7 @@ static const char *path_in(fixture *fx, const char *name)
     return fx->path;
 }
 
-static bool exists(const char *path)
-{
-    return access(path, F_OK) == 0;
-}
+static bool exists(const char *path) { return access(path, F_OK) == 0; }
 
 static int count_entries(const char *dir)
 {
@@ -84,8 +79,7 @@ static int count_entries(const char *dir)
     int n = 0;
     for (struct dirent *e; d && (e = readdir(d));)
         n += strcmp(e->d_name, ".") != 0 && strcmp(e->d_name, "..") != 0;
-    if (d)
-        closedir(d);
+    if (d) closedir(d);
     return n;
 }
 
@@ -110,8 +104,8 @@ static void sample_fill(sample *s, int dim, size_t n, double shift)
     s->n = n;
     s->dim = dim;
     /* Edge values, so "exact" means bit for bit: signed zero, subnormal, extremes, NaN, inf. */
-    const double special[SMALL] = {-0.0, 4.9406564584124654e-324, DBL_MAX, -DBL_MAX,
-                                   NAN,  INFINITY,                1.0 / 3.0};
+    const double special[SMALL] = {
+        -0.0, 4.9406564584124654e-324, DBL_MAX, -DBL_MAX, NAN, INFINITY, 1.0 / 3.0};
     const int64_t special64[SMALL] = {INT64_MIN, INT64_MAX, -1, 0, 1, 1LL << 40, 42};
     const int32_t special32[SMALL] = {INT32_MIN, INT32_MAX, -1, 0, 1, 2, 1 << 20};
     for (size_t i = 0; i < SMALL; ++i) {
@@ -135,13 +129,14 @@ static void sample_fill(sample *s, int dim, size_t n, double shift)
         {"flags", FIELD_INT32, dim, {s->flags[0], s->flags[1], s->flags[2]}},
     };
     memcpy(s->fields, f, sizeof f);
-    s->attrs = (snapshot_attrs){.time = 0.1 + shift,
-                                .step = 123456789012L,
-                                .eta = 0.015625,
-                                .dim = dim,
-                                .dr = 1.0 / 30.0,
-                                .h = 2.0 / 30.0,
-                                .case_text = "[case]\nname = \"sap\"\n[numerics]\nresolution = 30\n"};
+    s->attrs =
+        (snapshot_attrs){.time = 0.1 + shift,
+                         .step = 123456789012L,
+                         .eta = 0.015625,
+                         .dim = dim,
+                         .dr = 1.0 / 30.0,
+                         .h = 2.0 / 30.0,
+                         .case_text = "[case]\nname = \"sap\"\n[numerics]\nresolution = 30\n"};
 }
 
 static int sample_write(const sample *s, const char *path, char *err, size_t err_len)
@@ -152,10 +147,7 @@ static int sample_write(const sample *s, const char *path, char *err, size_t err
 /* ---------------------------------------------------------------------------------------- */
 /* Reading back                                                                              */
 
-static size_t elem_size(field_type t)
-{
-    return t == FIELD_INT32 ? 4 : 8;
-}
+static size_t elem_size(field_type t) { return t == FIELD_INT32 ? 4 : 8; }
 
 static hid_t expected_file_type(field_type t)
 {
@@ -164,8 +156,9 @@ static hid_t expected_file_type(field_type t)
 
 static hid_t mem_type(field_type t)
 {
-    return t == FIELD_DOUBLE ? H5T_NATIVE_DOUBLE
-                             : t == FIELD_INT64 ? H5T_NATIVE_INT64 : H5T_NATIVE_INT32;
+    return t == FIELD_DOUBLE  ? H5T_NATIVE_DOUBLE
+           : t == FIELD_INT64 ? H5T_NATIVE_INT64
+                              : H5T_NATIVE_INT32;
 }
 
 /* Opens a dataset and checks its shape (n, or n x ncomp) and stored type. */
@@ -179,8 +172,7 @@ static hid_t open_checked(hid_t file, const char *name, field_type type, size_t 
     H5Sclose(space);
     assert_int_equal(rank, ncomp > 1 ? 2 : 1);
     assert_int_equal(dims[0], n);
-    if (ncomp > 1)
-        assert_int_equal(dims[1], ncomp);
+    if (ncomp > 1) assert_int_equal(dims[1], ncomp);
     hid_t ftype = H5Dget_type(dset);
     assert_true(H5Tequal(ftype, expected_file_type(type)) > 0);
     H5Tclose(ftype);
@@ -210,10 +202,8 @@ static void check_vertices(hid_t file, size_t n)
     hid_t dset = open_checked(file, SNAPSHOT_VERTICES_DATASET, FIELD_INT32, n, 1);
     int32_t *v = malloc((n + 1) * sizeof *v);
     assert_non_null(v);
-    if (n > 0)
-        assert_true(H5Dread(dset, H5T_NATIVE_INT32, H5S_ALL, H5S_ALL, H5P_DEFAULT, v) >= 0);
-    for (size_t i = 0; i < n; ++i)
-        assert_int_equal(v[i], (int32_t)i);
+    if (n > 0) assert_true(H5Dread(dset, H5T_NATIVE_INT32, H5S_ALL, H5S_ALL, H5P_DEFAULT, v) >= 0);
+    for (size_t i = 0; i < n; ++i) assert_int_equal(v[i], (int32_t)i);
     free(v);
     H5Dclose(dset);
 }
@@ -268,8 +258,7 @@ static void check_sample_file(const char *path, const sample *s)
     hid_t file = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT);
     assert_true(file >= 0);
     check_attrs(file, &s->attrs);
-    for (int i = 0; i < N_SAMPLE_FIELDS; ++i)
-        check_field(file, &s->fields[i], s->n);
+    for (int i = 0; i < N_SAMPLE_FIELDS; ++i) check_field(file, &s->fields[i], s->n);
     check_vertices(file, s->n);
     H5Fclose(file);
 }
@@ -297,15 +286,9 @@ static void roundtrip(fixture *fx, int dim)
     assert_int_equal(count_entries(fx->dir), 1);
 }
 
-static void test_write_2d_roundtrip(void **state)
-{
-    roundtrip(*state, 2);
-}
+static void test_write_2d_roundtrip(void **state) { roundtrip(*state, 2); }
 
-static void test_write_3d_roundtrip(void **state)
-{
-    roundtrip(*state, 3);
-}
+static void test_write_3d_roundtrip(void **state) { roundtrip(*state, 3); }
 
 /* More rows than one interleaving block holds (8192), with a partial last block, so the
  * block boundaries are covered too. */
@@ -324,10 +307,8 @@ static void test_write_many_rows(void **state)
         assert_non_null(k[c]);
     }
     for (size_t i = 0; i < n; ++i) {
-        for (int c = 0; c < 3; ++c)
-            x[c][i] = (double)i * 0.001 + c;
-        for (int c = 0; c < 2; ++c)
-            k[c][i] = (int32_t)i * (c ? -1 : 1);
+        for (int c = 0; c < 3; ++c) x[c][i] = (double)i * 0.001 + c;
+        for (int c = 0; c < 2; ++c) k[c][i] = (int32_t)i * (c ? -1 : 1);
     }
     const snapshot_field f[] = {
         {"position", FIELD_DOUBLE, 3, {x[0], x[1], x[2]}},
@@ -343,10 +324,8 @@ static void test_write_many_rows(void **state)
     check_field(file, &f[1], n);
     check_vertices(file, n);
     H5Fclose(file);
-    for (int c = 0; c < 3; ++c)
-        free(x[c]);
-    for (int c = 0; c < 2; ++c)
-        free(k[c]);
+    for (int c = 0; c < 3; ++c) free(x[c]);
+    for (int c = 0; c < 2; ++c) free(k[c]);
 }
 
 /* n = 0: every dataset exists with zero rows; the component pointers are never read. */
@@ -366,8 +345,7 @@ static void test_write_empty(void **state)
     hid_t file = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT);
     assert_true(file >= 0);
     check_attrs(file, &a); /* a NULL case text is stored as "" */
-    for (int i = 0; i < 3; ++i)
-        check_field(file, &f[i], 0);
+    for (int i = 0; i < 3; ++i) check_field(file, &f[i], 0);
     check_vertices(file, 0);
     H5Fclose(file);
 }
@@ -519,10 +497,8 @@ static bool xml_balanced(const char *s)
     int depth = 0;
     for (const char *p = strchr(s, '<'); p; p = strchr(p + 1, '<')) {
         const char *end = strchr(p, '>');
-        if (!end)
-            return false;
-        if (p[1] == '?')
-            continue;
+        if (!end) return false;
+        if (p[1] == '?') continue;
         if (p[1] == '/') {
             const size_t len = strcspn(p + 2, " >");
             if (depth == 0 || open_len[depth - 1] != len ||
@@ -530,8 +506,7 @@ static bool xml_balanced(const char *s)
                 return false;
             --depth;
         } else if (end[-1] != '/') {
-            if (depth == 32)
-                return false;
+            if (depth == 32) return false;
             open_name[depth] = p + 1;
             open_len[depth] = strcspn(p + 1, " />\n");
             ++depth;
@@ -546,12 +521,10 @@ static bool tag_attr(const char *tag, const char *end, const char *name, char *o
     char key[64];
     snprintf(key, sizeof key, " %s=\"", name);
     const char *v = strstr(tag, key);
-    if (!v || v > end)
-        return false;
+    if (!v || v > end) return false;
     v += strlen(key);
     const size_t n = strcspn(v, "\"");
-    if (n >= len)
-        return false;
+    if (n >= len) return false;
     memcpy(out, v, n);
     out[n] = '\0';
     return true;
@@ -630,8 +603,7 @@ static void check_times(const char *xml, const double *times, int n)
 /* The optional external check: only where xmllint happens to be installed. */
 static void xmllint_if_available(const char *path)
 {
-    if (access("/usr/bin/xmllint", X_OK) != 0)
-        return;
+    if (access("/usr/bin/xmllint", X_OK) != 0) return;
     char cmd[640];
     snprintf(cmd, sizeof cmd, "/usr/bin/xmllint --noout '%s'", path);
     assert_int_equal(system(cmd), 0);
@@ -649,8 +621,8 @@ static char *write_series(fixture *fx, int dim, const double *times, const size_
     }
     sample_fill(&s, dim, SMALL, 0.0);
     const char *xmf = path_in(fx, "snapshots.xmf");
-    assert_int_equal(snapshot_write_xdmf(xmf, n, files, times, counts, s.fields,
-                                         N_SAMPLE_FIELDS, dim, err, sizeof err),
+    assert_int_equal(snapshot_write_xdmf(xmf, n, files, times, counts, s.fields, N_SAMPLE_FIELDS,
+                                         dim, err, sizeof err),
                      0);
     assert_false(exists(path_in(fx, "snapshots.xmf.tmp")));
     xmllint_if_available(path_in(fx, "snapshots.xmf"));
@@ -726,12 +698,12 @@ static void test_xdmf_rewrite_and_escaping(void **state)
     const size_t counts[] = {SMALL, SMALL};
     char err[256] = "";
     const char *xmf = path_in(fx, "s.xmf");
-    assert_int_equal(snapshot_write_xdmf(xmf, 1, files, times, counts, s.fields,
-                                         N_SAMPLE_FIELDS, 2, err, sizeof err),
+    assert_int_equal(snapshot_write_xdmf(xmf, 1, files, times, counts, s.fields, N_SAMPLE_FIELDS, 2,
+                                         err, sizeof err),
                      0);
     xmf = path_in(fx, "s.xmf");
-    assert_int_equal(snapshot_write_xdmf(xmf, 2, files, times, counts, s.fields,
-                                         N_SAMPLE_FIELDS, 2, err, sizeof err),
+    assert_int_equal(snapshot_write_xdmf(xmf, 2, files, times, counts, s.fields, N_SAMPLE_FIELDS, 2,
+                                         err, sizeof err),
                      0);
     char *xml = slurp(path_in(fx, "s.xmf"));
     assert_non_null(strstr(xml, ">a&amp;b.h5:/density<"));

@@ -51,7 +51,10 @@ static int run_text(const char *text, const char *dir, int threads)
     return simulation_run(&cfg, &opt);
 }
 
-static int run_case(const char *dir, int threads) { return run_text(still_tank_case, dir, threads); }
+static int run_case(const char *dir, int threads)
+{
+    return run_text(still_tank_case, dir, threads);
+}
 
 static int setup(void **state)
 {
@@ -166,7 +169,7 @@ static void test_thread_count_independent(void **state)
     assert_int_equal(rename(out_dir, moved), 0);
     assert_int_equal(run_case(out_dir, 1), RUN_OK);
     const char *files[] = {"timeseries.csv", "snapshots/000001.h5", "snapshots/000002.h5",
-                           "snapshots.xmf", "events.csv", "case.ini"};
+                           "snapshots.xmf",  "events.csv",          "case.ini"};
     for (size_t k = 0; k < sizeof files / sizeof *files; k++) {
         snprintf(path_a, sizeof path_a, "%s/%s", out_dir, files[k]);
         snprintf(path_b, sizeof path_b, "%s/%s", moved, files[k]);

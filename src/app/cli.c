@@ -52,8 +52,10 @@ int cli_parse(int argc, char **argv, cli_args *args, char *err, int err_len)
         args->command = CLI_VERSION;
         return 0;
     }
-    if (!strcmp(cmd, "run")) args->command = CLI_RUN;
-    else if (!strcmp(cmd, "check")) args->command = CLI_CHECK;
+    if (!strcmp(cmd, "run"))
+        args->command = CLI_RUN;
+    else if (!strcmp(cmd, "check"))
+        args->command = CLI_CHECK;
     else {
         snprintf(err, (size_t)err_len, "vcsph: unknown command '%s' (allowed: run, check)", cmd);
         return 2;
@@ -63,12 +65,17 @@ int cli_parse(int argc, char **argv, cli_args *args, char *err, int err_len)
         if (!strncmp(a, "--set", 5) && (a[5] == '\0' || a[5] == '=')) {
             if (take_value(argc, argv, &k, &value, err, err_len)) return 2;
             if (args->n_overrides == CLI_MAX_OVERRIDES) {
-                snprintf(err, (size_t)err_len, "vcsph: at most %d --set options", CLI_MAX_OVERRIDES);
+                snprintf(err, (size_t)err_len, "vcsph: at most %d --set options",
+                         CLI_MAX_OVERRIDES);
                 return 2;
             }
             args->overrides[args->n_overrides++] = value;
-        } else if (!strcmp(a, "-o") || !strncmp(a, "--output", 8)) {
+        } else if (!strcmp(a, "-o") || !strcmp(a, "--output") || !strncmp(a, "--output=", 9)) {
             if (take_value(argc, argv, &k, &value, err, err_len)) return 2;
+            if (value[0] == '-' || value[0] == '\0') {
+                snprintf(err, (size_t)err_len, "vcsph: %s needs a directory, not '%s'", a, value);
+                return 2;
+            }
             args->output_dir = value;
         } else if (!strcmp(a, "--quiet") || !strcmp(a, "-q")) {
             args->quiet = true;

@@ -14,7 +14,7 @@ typedef struct {
     const char *case_path;
     const char *overrides[CLI_MAX_OVERRIDES]; /* "section.key=value" from --set */
     int n_overrides;
-    const char *output_dir;                   /* -o, NULL: output.dir of the case */
+    const char *output_dir; /* -o, NULL: output.dir of the case */
     bool quiet;
 } cli_args;
 

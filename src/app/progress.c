@@ -43,8 +43,9 @@ void progress_update(progress *pr, double t, long step, bool force)
     format_duration(eta, sizeof eta, t > 0 ? elapsed * (pr->t_end - t) / t : 0.0);
     format_duration(spent, sizeof spent, elapsed);
     char line[200];
-    snprintf(line, sizeof line, "t = %.4f / %.4g s (%3.0f%%)  step %ld  %.3g PS/s  elapsed %s  ETA %s",
-             t, pr->t_end, 100.0 * t / pr->t_end, step, rate, spent, eta);
+    snprintf(line, sizeof line,
+             "t = %.4f / %.4g s (%3.0f%%)  step %ld  %.3g PS/s  elapsed %s  ETA %s", t, pr->t_end,
+             100.0 * t / pr->t_end, step, rate, spent, eta);
     if (pr->tty) {
         int width = printf("\r%s", line) - 1;
         for (int k = width; k < pr->line_width; k++) putchar(' ');

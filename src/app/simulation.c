@@ -25,9 +25,9 @@ typedef struct {
     solver s;
     const config *cfg;
     const run_options *opt;
-    char *case_text;         /* resolved case.ini, also stored in every snapshot */
+    char *case_text; /* resolved case.ini, also stored in every snapshot */
     csv_file timeseries, events;
-    double energy0;          /* ekin + epot + eint at t = 0 */
+    double energy0; /* ekin + epot + eint at t = 0 */
     double mass0, v0;
     double next_series, next_snapshot;
     /* snapshot index for the XDMF file */
@@ -35,7 +35,7 @@ typedef struct {
     char **snapshot_files;
     double *snapshot_times;
     size_t *snapshot_counts;
-    int speed_warned;        /* U_max > c0/10 reported and not yet back below */
+    int speed_warned; /* U_max > c0/10 reported and not yet back below */
     progress pr;
 } run;
 
@@ -80,8 +80,8 @@ static void write_series_row(run *r)
     for (int k = 0; k < 4; k++) csv_put_empty(c); /* eps_v1..3, eps_gm: volume issue */
     csv_put(c, dg.vol_sph / r->v0 - 1.0);
     csv_put(c, dg.mass / r->mass0 - 1.0);
-    csv_put(c, 0.0); /* eta */
-    csv_put(c, 0.0); /* edbc */
+    csv_put(c, 0.0);    /* eta */
+    csv_put(c, 0.0);    /* edbc */
     csv_put_long(c, 0); /* n_edbc */
     csv_put_empty(c);   /* n_free_surface: volume issue */
     csv_put(c, dg.ekin);
@@ -235,12 +235,29 @@ static int outputs_due(run *r, int last)
     return 0;
 }
 
+/* Stops the run on a breakdown (design §2): message, event, a last row and snapshot. */
+static int breakdown(run *r)
+{
+    char msg[512];
+    if (!health_check(&r->s, msg, sizeof msg)) return 0;
+    progress_clear(&r->pr);
+    log_error("vcsph: %s", msg);
+    event(r, "breakdown", msg);
+    write_series_row(r);
+    if (write_snapshot(r) == 0)
+        log_error("vcsph: last state written to %s/snapshots/%06d.h5", r->opt->output_dir,
+                  r->n_snapshots - 1);
+    return 1;
+}
+
 static int time_loop(run *r)
 {
     solver *s = &r->s;
     const config *cfg = r->cfg;
     char msg[512];
     progress_start(&r->pr, cfg->t_end, s->p.n_fluid, s->step, r->opt->quiet);
+    /* the initial state too: a sound speed too low for the hydrostatic column fails here */
+    if (breakdown(r)) return RUN_BREAKDOWN;
     while (s->t < cfg->t_end) {
         if (solver_step(s, cfg->t_end)) {
             progress_clear(&r->pr);
@@ -252,16 +269,7 @@ static int time_loop(run *r)
                      s->max_displacement, 0.5 * s->skin);
             event(r, "neighbour_skin_exceeded", msg);
         }
-        if (health_check(s, msg, sizeof msg)) {
-            progress_clear(&r->pr);
-            log_error("vcsph: %s", msg);
-            event(r, "breakdown", msg);
-            write_series_row(r);
-            if (write_snapshot(r) == 0)
-                log_error("vcsph: last state written to %s/snapshots/%06d.h5", r->opt->output_dir,
-                          r->n_snapshots - 1);
-            return RUN_BREAKDOWN;
-        }
+        if (breakdown(r)) return RUN_BREAKDOWN;
         int last = s->t >= cfg->t_end;
         if (outputs_due(r, last)) return RUN_FAILED;
         progress_update(&r->pr, s->t, s->step, last);
@@ -303,8 +311,8 @@ int simulation_run_dim(const config *cfg, const run_options *opt)
     status = outputs_due(&r, 0) ? RUN_FAILED : time_loop(&r);
     double wall = progress_wall_time() - wall0;
     if (status == RUN_OK)
-        log_info("vcsph: done: %ld steps in %.1f s (%.3g particle-steps/s); output in %s",
-                 r.s.step, wall, wall > 0 ? (double)r.s.step * (double)dv->n_fluid / wall : 0.0,
+        log_info("vcsph: done: %ld steps in %.1f s (%.3g particle-steps/s); output in %s", r.s.step,
+                 wall, wall > 0 ? (double)r.s.step * (double)dv->n_fluid / wall : 0.0,
                  opt->output_dir);
     close_run(&r);
     return status;

@@ -7,20 +7,22 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* Displacement s(t) = A e^{-lt} f(wt + phase) and its second derivative, for f = sin (sway)
- * or f = -cos (heave). With theta = wt + phase and E = A e^{-lt}:
- *   sway:  x  = E sin(theta),  x'' = E [(l^2 - w^2) sin(theta) - 2 l w cos(theta)]
- *   heave: y  = -E cos(theta), y'' = E [(w^2 - l^2) cos(theta) - 2 l w sin(theta)]  */
-static void harmonic(const motion *mo, double t, double *pos, double *acc)
+/* Displacement s(t) = A e^{-lt} f(wt + phase), its first and second derivatives, for
+ * f = sin (sway) or f = -cos (heave). With theta = wt + phase and E = A e^{-lt}:
+ *   sway:  x = E sin(theta),  x' = E (w cos - l sin),  x'' = E [(l^2 - w^2) sin - 2 l w cos]
+ *   heave: y = -E cos(theta), y' = E (l cos + w sin),  y'' = E [(w^2 - l^2) cos - 2 l w sin] */
+static void harmonic(const motion *mo, double t, double *pos, double *vel, double *acc)
 {
     double w = mo->omega, l = mo->decay;
     double e = mo->amplitude * exp(-l * t);
     double th = w * t + mo->phase, s = sin(th), c = cos(th);
     if (mo->kind == MOTION_SWAY) {
         *pos = e * s;
+        *vel = e * (w * c - l * s);
         *acc = e * ((l * l - w * w) * s - 2.0 * l * w * c);
     } else {
         *pos = -e * c;
+        *vel = e * (l * c + w * s);
         *acc = e * ((w * w - l * l) * c - 2.0 * l * w * s);
     }
 }
@@ -31,8 +33,10 @@ static size_t knot_interval(const motion *mo, double t)
     size_t lo = 0, hi = mo->n_knots - 1;
     while (hi - lo > 1) {
         size_t mid = (lo + hi) / 2;
-        if (mo->t[mid] <= t) lo = mid;
-        else hi = mid;
+        if (mo->t[mid] <= t)
+            lo = mid;
+        else
+            hi = mid;
     }
     return lo;
 }
@@ -56,32 +60,49 @@ void motion_acceleration(const motion *mo, double t, double a[3])
         for (int d = 0; d < 3; d++) a[d] = (1.0 - w) * mo->acc[d][k] + w * mo->acc[d][k + 1];
         return;
     }
-    double pos;
-    harmonic(mo, t, &pos, &a[mo->kind == MOTION_SWAY ? 0 : 1]);
+    double pos, vel;
+    harmonic(mo, t, &pos, &vel, &a[mo->kind == MOTION_SWAY ? 0 : 1]);
 }
 
-void motion_position(const motion *mo, double t, double x[3])
+/* Displacement and velocity without the `duration` cut; a table's ends hold still. */
+static void state_at(const motion *mo, double t, double x[3], double v[3])
 {
-    x[0] = x[1] = x[2] = 0.0;
+    for (int d = 0; d < 3; d++) x[d] = v[d] = 0.0;
     if (mo->kind == MOTION_NONE) return;
-    if (mo->duration > 0.0 && t > mo->duration) t = mo->duration; /* the tank stops there */
     if (mo->kind == MOTION_TABLE) {
         if (t <= mo->t[0] || t >= mo->t[mo->n_knots - 1]) {
             size_t k = t <= mo->t[0] ? 0 : mo->n_knots - 1;
             for (int d = 0; d < 3; d++) x[d] = mo->pos[d][k];
             return;
         }
+        /* the cubic spline between knots k and k+1, and its derivative */
         size_t k = knot_interval(mo, t);
         double hk = mo->t[k + 1] - mo->t[k];
         double b = (t - mo->t[k]) / hk, a = 1.0 - b;
-        for (int d = 0; d < 3; d++)
-            x[d] = a * mo->pos[d][k] + b * mo->pos[d][k + 1] +
-                   ((a * a * a - a) * mo->acc[d][k] + (b * b * b - b) * mo->acc[d][k + 1]) * hk *
-                       hk / 6.0;
+        for (int d = 0; d < 3; d++) {
+            const double *y = mo->pos[d], *y2 = mo->acc[d];
+            x[d] = a * y[k] + b * y[k + 1] +
+                   ((a * a * a - a) * y2[k] + (b * b * b - b) * y2[k + 1]) * hk * hk / 6.0;
+            v[d] = (y[k + 1] - y[k]) / hk +
+                   (-(3.0 * a * a - 1.0) * y2[k] + (3.0 * b * b - 1.0) * y2[k + 1]) * hk / 6.0;
+        }
         return;
     }
+    int axis = mo->kind == MOTION_SWAY ? 0 : 1;
     double acc;
-    harmonic(mo, t, &x[mo->kind == MOTION_SWAY ? 0 : 1], &acc);
+    harmonic(mo, t, &x[axis], &v[axis], &acc);
+}
+
+void motion_position(const motion *mo, double t, double x[3])
+{
+    double d = mo->duration, v[3];
+    if (!(d > 0.0 && t > d)) {
+        state_at(mo, t, x, v);
+        return;
+    }
+    /* after `duration` the acceleration is zero: the tank goes on at the velocity it had */
+    state_at(mo, d, x, v);
+    for (int k = 0; k < 3; k++) x[k] += v[k] * (t - d);
 }
 
 double motion_max_effective_gravity(const motion *mo, double gravity, double t_end)
@@ -151,7 +172,7 @@ static int read_table(motion *mo, const char *path, char *err, size_t err_len)
         snprintf(err, err_len, "%s: cannot open motion table: %s", path, strerror(errno));
         return 2;
     }
-    char line[512];
+    char line[4096];
     size_t cap = 0, lineno = 0;
     int status = 0;
     while (fgets(line, sizeof line, f)) {
@@ -182,8 +203,10 @@ static int read_table(motion *mo, const char *path, char *err, size_t err_len)
     }
     for (int d = 0; status == 0 && d < 3; d++) {
         mo->acc[d] = malloc(mo->n_knots * sizeof(double));
-        if (!mo->acc[d] || spline_second_derivatives(mo->t, mo->pos[d], mo->n_knots, mo->acc[d]))
+        if (!mo->acc[d] || spline_second_derivatives(mo->t, mo->pos[d], mo->n_knots, mo->acc[d])) {
+            snprintf(err, err_len, "%s: out of memory", path);
             status = 2;
+        }
     }
     return status;
 }

@@ -19,7 +19,8 @@ int motion_init(motion *mo, const config *cfg, char *err, size_t err_len);
 void motion_free(motion *mo);
 /* Tank acceleration (m/s^2) at time t along x, y, z of the tank frame. */
 void motion_acceleration(const motion *mo, double t, double a[3]);
-/* Tank displacement (m) at time t. */
+/* Tank displacement (m) at time t; after `duration`, uniform motion at the velocity reached
+ * then. A table's natural spline has zero acceleration at its first and last rows. */
 void motion_position(const motion *mo, double t, double x[3]);
 /* Largest |g - a_tank| over [0, t_end] (sampled), the g_max of the sound-speed rule. */
 double motion_max_effective_gravity(const motion *mo, double gravity, double t_end);

@@ -12,10 +12,10 @@ typedef struct {
     wall_kind wall;
 } tank;
 
-#define tank_make_ghosts DIM_NAME(tank_make_ghosts)
-#define tank_refresh_ghosts DIM_NAME(tank_refresh_ghosts)
+#define tank_make_ghosts        DIM_NAME(tank_make_ghosts)
+#define tank_refresh_ghosts     DIM_NAME(tank_refresh_ghosts)
 #define tank_mirror_step_fields DIM_NAME(tank_mirror_step_fields)
-#define tank_bounce_back DIM_NAME(tank_bounce_back)
+#define tank_bounce_back        DIM_NAME(tank_bounce_back)
 
 /* Rebuilds the ghost list: every fluid particle within `reach` of a wall gets an image across
  * it, and across each pair (and triple) of walls near an edge or corner. Only the list

@@ -12,9 +12,9 @@ typedef struct {
     double size;        /* cell side >= search radius */
     int n[DIM];         /* cells per axis */
     size_t n_cells;
-    size_t *start;      /* n_cells + 1: items of cell c are item[start[c] .. start[c+1]) */
-    uint32_t *item;     /* particle indices, ascending within each cell */
-    uint32_t *cell_of;  /* cell of each binned particle */
+    size_t *start;     /* n_cells + 1: items of cell c are item[start[c] .. start[c+1]) */
+    uint32_t *item;    /* particle indices, ascending within each cell */
+    uint32_t *cell_of; /* cell of each binned particle */
     size_t item_capacity, cells_capacity;
 } cell_grid;
 
@@ -27,12 +27,12 @@ typedef struct {
     double radius;
 } neighbour_list;
 
-#define cells_setup DIM_NAME(cells_setup)
-#define cells_free DIM_NAME(cells_free)
-#define cells_bin DIM_NAME(cells_bin)
+#define cells_setup      DIM_NAME(cells_setup)
+#define cells_free       DIM_NAME(cells_free)
+#define cells_bin        DIM_NAME(cells_bin)
 #define cells_sort_order DIM_NAME(cells_sort_order)
 #define neighbours_build DIM_NAME(neighbours_build)
-#define neighbours_free DIM_NAME(neighbours_free)
+#define neighbours_free  DIM_NAME(neighbours_free)
 
 /* Lays out cells of side >= cell_size over the box [lo, hi]; particles outside it are
  * clamped into the border cells (still found, just less efficiently). */

@@ -44,7 +44,7 @@ typedef enum {
     KIND_REAL,
     KIND_REAL_AUTO, /* "auto" is stored as 0 */
     KIND_BOOL,
-    KIND_WORD,      /* an enumeration, spelled as in `words`, stored as the word's index */
+    KIND_WORD, /* an enumeration, spelled as in `words`, stored as the word's index */
     KIND_NAME,
     KIND_PATH,
     KIND_GAUGES,
@@ -74,15 +74,35 @@ typedef struct {
     const char *allowed;      /* "must be <allowed>" in messages, the comment in config_write */
 } key_spec;
 
-#define ANY {-DBL_MAX, DBL_MAX, false, false}
-#define POSITIVE {0.0, DBL_MAX, true, false}
-#define NON_NEGATIVE {0.0, DBL_MAX, false, false}
-#define CLOSED(lo, hi) {lo, hi, false, false}
-#define OPEN(lo, hi) {lo, hi, true, true}
-#define LEFT_OPEN(lo, hi) {lo, hi, true, false}
-#define KEY(sec, nam, kind, flags, def, field, rng, words, allowed)                              \
-    {sec, nam, kind, flags, def, offsetof(config, field), sizeof(((config *)0)->field), rng,    \
-     words, allowed}
+#define ANY                                                                                        \
+    {                                                                                              \
+        -DBL_MAX, DBL_MAX, false, false                                                            \
+    }
+#define POSITIVE                                                                                   \
+    {                                                                                              \
+        0.0, DBL_MAX, true, false                                                                  \
+    }
+#define NON_NEGATIVE                                                                               \
+    {                                                                                              \
+        0.0, DBL_MAX, false, false                                                                 \
+    }
+#define CLOSED(lo, hi)                                                                             \
+    {                                                                                              \
+        lo, hi, false, false                                                                       \
+    }
+#define OPEN(lo, hi)                                                                               \
+    {                                                                                              \
+        lo, hi, true, true                                                                         \
+    }
+#define LEFT_OPEN(lo, hi)                                                                          \
+    {                                                                                              \
+        lo, hi, true, false                                                                        \
+    }
+#define KEY(sec, nam, kind, flags, def, field, rng, words, allowed)                                \
+    {                                                                                              \
+        sec, nam, kind, flags, def, offsetof(config, field), sizeof(((config *)0)->field), rng,    \
+            words, allowed                                                                         \
+    }
 
 static const char *const bool_words[] = {"false", "true", NULL};
 static const char *const motion_words[] = {"none", "sway", "heave", "table", NULL};
@@ -92,7 +112,7 @@ static const char *const edbc_words[] = {"false", "true", "with-eta0", NULL};
 static const char *const eta_control_words[] = {"threshold", "adaptive", NULL};
 static const char *const wall_words[] = {"no-slip", "free-slip", NULL};
 
-static const char *const sections[] = {"case",  "tank",  "liquid",   "fluid", "motion",
+static const char *const sections[] = {"case",  "tank",     "liquid", "fluid", "motion",
                                        "model", "numerics", "probes", "output"};
 #define N_SECTIONS (sizeof sections / sizeof sections[0])
 
@@ -114,10 +134,8 @@ static const key_spec keys[] = {
         "a length > 0 (m)"),
     KEY("liquid", "length", KIND_REAL, KEY_DERIVED, NULL, liquid_length, POSITIVE, NULL,
         "a length > 0 (m); default: the tank length"),
-    KEY("liquid", "x0", KIND_REAL, 0, "0.0", liquid_x0, NON_NEGATIVE, NULL,
-        "a position >= 0 (m)"),
-    KEY("liquid", "y0", KIND_REAL, 0, "0.0", liquid_y0, NON_NEGATIVE, NULL,
-        "a position >= 0 (m)"),
+    KEY("liquid", "x0", KIND_REAL, 0, "0.0", liquid_x0, NON_NEGATIVE, NULL, "a position >= 0 (m)"),
+    KEY("liquid", "y0", KIND_REAL, 0, "0.0", liquid_y0, NON_NEGATIVE, NULL, "a position >= 0 (m)"),
 
     KEY("fluid", "density", KIND_REAL, 0, "1000.0", density, POSITIVE, NULL,
         "a density > 0 (kg/m^3)"),
@@ -177,8 +195,7 @@ static const key_spec keys[] = {
         "a time >= 0 (s; 0 = none)"),
     KEY("output", "checkpoint_every", KIND_REAL, 0, "600", checkpoint_every, NON_NEGATIVE, NULL,
         "a wall-clock time >= 0 (s; 0 = none)"),
-    KEY("output", "graphical", KIND_BOOL, 0, "false", graphical, ANY, bool_words,
-        "true or false"),
+    KEY("output", "graphical", KIND_BOOL, 0, "false", graphical, ANY, bool_words, "true or false"),
 };
 #define N_KEYS (sizeof keys / sizeof keys[0])
 
@@ -405,8 +422,7 @@ static void fail_unknown_section(parse_ctx *ctx, const char *at, const char *nam
         fail(ctx, "%s: unknown section [%s]; sections are: %s", at, name, list);
 }
 
-static void fail_unknown_key(parse_ctx *ctx, const char *at, const char *section,
-                             const char *name)
+static void fail_unknown_key(parse_ctx *ctx, const char *at, const char *section, const char *name)
 {
     const char *names[N_KEYS];
     size_t n = section_key_names(section, names);
@@ -449,8 +465,7 @@ static bool set_int(parse_ctx *ctx, const key_spec *k, const char *s, char *why,
     return true;
 }
 
-static bool set_real_checked(parse_ctx *ctx, const key_spec *k, const char *s, char *why,
-                             size_t n)
+static bool set_real_checked(parse_ctx *ctx, const key_spec *k, const char *s, char *why, size_t n)
 {
     double v;
     if (!parse_real(s, &v)) {
@@ -548,8 +563,8 @@ static bool list_number(const key_spec *k, const char **p, const char *seps, dou
         if (len == 0)
             snprintf(why, n, "unexpected '%c'; must be %s", **p, k->allowed);
         else
-            snprintf(why, n, "'%.*s' is not a finite number; must be %s", len > 40 ? 40 : len,
-                     *p, k->allowed);
+            snprintf(why, n, "'%.*s' is not a finite number; must be %s", len > 40 ? 40 : len, *p,
+                     k->allowed);
         return false;
     }
     *p = skip_space(end);
@@ -751,8 +766,8 @@ static void fail_key(parse_ctx *ctx, const key_spec *k, const char *why)
     int header = ctx->section_line[section_index(k->section)];
     char at[CONFIG_PATH_MAX + 32];
     if (header)
-        fail(ctx, "%s: %s.%s: missing in [%s]; %s", where(ctx, header, at, sizeof at),
-             k->section, k->name, k->section, why);
+        fail(ctx, "%s: %s.%s: missing in [%s]; %s", where(ctx, header, at, sizeof at), k->section,
+             k->name, k->section, why);
     else
         fail(ctx, "%s: %s.%s: missing, and so is section [%s]; %s", where(ctx, 0, at, sizeof at),
              k->section, k->name, k->section, why);
@@ -804,8 +819,8 @@ static void check_section_header(parse_ctx *ctx)
     where(ctx, ctx->lineno, at, sizeof at);
     const char *rest = skip_space(end + 1);
     if (*rest && *rest != ';' && *rest != '#') {
-        fail(ctx, "%s: unexpected text after [%s]; only a comment may follow a section header",
-             at, name);
+        fail(ctx, "%s: unexpected text after [%s]; only a comment may follow a section header", at,
+             name);
         return;
     }
     int i = section_index(name);
@@ -872,8 +887,8 @@ static int on_key(void *user, const char *section, const char *name, const char 
     }
     int first = ctx->key_line[k - keys];
     if (first > 0) {
-        fail(ctx, "%s: %s.%s: set twice (first on line %d); give each key once", at, section,
-             name, first);
+        fail(ctx, "%s: %s.%s: set twice (first on line %d); give each key once", at, section, name,
+             first);
         return 0;
     }
     if ((k->kind == KIND_GAUGES || k->kind == KIND_POINTS) && list_cut_by_comment(ctx->line)) {
@@ -895,9 +910,15 @@ typedef struct {
 
 static ini_options ini_options_get(void)
 {
-    return (ini_options){ini_allow_multiline, ini_allow_bom,      ini_allow_inline_comments,
-                         ini_use_stack,       ini_stop_on_first_error, ini_allow_no_value,
-                         ini_start_comment_prefixes, ini_inline_comment_prefixes, ini_max_line};
+    return (ini_options){ini_allow_multiline,
+                         ini_allow_bom,
+                         ini_allow_inline_comments,
+                         ini_use_stack,
+                         ini_stop_on_first_error,
+                         ini_allow_no_value,
+                         ini_start_comment_prefixes,
+                         ini_inline_comment_prefixes,
+                         ini_max_line};
 }
 
 static void ini_options_set(const ini_options *o)
@@ -916,8 +937,8 @@ static void ini_options_set(const ini_options *o)
 static void parse_input(parse_ctx *ctx)
 {
     /* No multi-line values: an indented line must not be glued to the previous value. */
-    static const ini_options ours = {false, true, true, true, true, false, ";#", ";",
-                                     CASE_LINE_MAX};
+    static const ini_options ours = {false, true, true, true,         true,
+                                     false, ";#", ";",  CASE_LINE_MAX};
     ini_options saved = ini_options_get();
     ini_options_set(&ours);
     int rc = ini_parse_stream(read_line, ctx, on_key, ctx);
@@ -1136,7 +1157,7 @@ static void check_probes(parse_ctx *ctx)
 
 /* In this order: defaults that depend on other keys need those keys first. */
 static void (*const checks[])(parse_ctx *ctx) = {check_required, resolve_defaults, check_liquid,
-                                                  check_motion, check_probes};
+                                                 check_motion, check_probes};
 
 /* ---- public ------------------------------------------------------------------------------- */
 

@@ -6,8 +6,8 @@
 #include <stddef.h>
 #include <stdio.h>
 
-#define CONFIG_PATH_MAX 1024
-#define CONFIG_NAME_MAX 128
+#define CONFIG_PATH_MAX   1024
+#define CONFIG_NAME_MAX   128
 #define CONFIG_PROBES_MAX 64
 
 typedef enum {

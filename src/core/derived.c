@@ -11,16 +11,18 @@ void derived_compute(const config *cfg, const motion *mo, derived *dv)
     double dr = cfg->liquid_height / cfg->resolution;
     dv->dr = dr;
     dv->h = cfg->h_over_dr * dr;
-    dv->n_axis[0] = lround(cfg->liquid_length / dr);
+    /* whole cells that fit in the liquid box: rounding up could put the last particle on
+       (or past) the wall; the relative 1e-9 keeps an exact fit from losing a cell */
+    dv->n_axis[0] = (long)floor(cfg->liquid_length / dr * (1.0 + 1e-9));
     dv->n_axis[1] = cfg->resolution;
-    dv->n_axis[2] = cfg->dim == 3 ? lround(cfg->tank_width / dr) : 1;
+    dv->n_axis[2] = cfg->dim == 3 ? (long)floor(cfg->tank_width / dr * (1.0 + 1e-9)) : 1;
     dv->n_fluid = dv->n_axis[0] * dv->n_axis[1] * dv->n_axis[2];
     dv->v0 = (double)dv->n_fluid * pow(dr, cfg->dim);
 
     dv->g_max = motion_max_effective_gravity(mo, cfg->gravity, cfg->t_end);
     /* Eq. (6) with U_max the speed of a fall from H under g_max */
     dv->c0 = cfg->sound_speed > 0.0 ? cfg->sound_speed
-                                     : 10.0 * sqrt(2.0 * dv->g_max * cfg->liquid_height);
+                                    : 10.0 * sqrt(2.0 * dv->g_max * cfg->liquid_height);
     dv->k_c = cfg->cfl > 0.0 ? cfg->cfl : models_params(cfg->scheme).k_c;
 
     double h = dv->h;

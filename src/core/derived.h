@@ -7,17 +7,17 @@
 #include "core/config.h"
 
 typedef struct {
-    double dr, h;               /* spacing H/N and smoothing length */
-    long n_axis[3];             /* lattice particles along x, y, z (z: 1 in 2D) */
+    double dr, h;   /* spacing H/N and smoothing length */
+    long n_axis[3]; /* lattice particles along x, y, z (z: 1 in 2D) */
     long n_fluid;
-    double v0;                  /* initial particle volume N dr^n (per unit width in 2D) */
-    double g_max;               /* largest effective gravity of the motion */
-    double c0;                  /* sound speed, given or 10 sqrt(2 g_max H) (Eq. 6) */
-    double k_c;                 /* CFL number (Table 1 unless given) */
+    double v0;                          /* initial particle volume N dr^n (per unit width in 2D) */
+    double g_max;                       /* largest effective gravity of the motion */
+    double c0;                          /* sound speed, given or 10 sqrt(2 g_max H) (Eq. 6) */
+    double k_c;                         /* CFL number (Table 1 unless given) */
     double dt_v, dt_c, dt_a, dt_st, dt; /* Eq. (8); dt_a estimated with g_max */
-    double mass_liquid;         /* M_L = rho0 L H W (W = 1 in 2D) */
-    double omega;               /* 2 pi / T, 0 without periodic motion */
-    double d_energy, d_power;   /* dE = M_L (A w)^2 / 2, dW = dE / T (Table 3) */
+    double mass_liquid;                 /* M_L = rho0 L H W (W = 1 in 2D) */
+    double omega;                       /* 2 pi / T, 0 without periodic motion */
+    double d_energy, d_power;           /* dE = M_L (A w)^2 / 2, dW = dE / T (Table 3) */
 } derived;
 
 void derived_compute(const config *cfg, const motion *mo, derived *out);

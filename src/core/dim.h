@@ -11,7 +11,7 @@
 #endif
 
 #define DIM_PASTE_(name, n) name##_##n##d
-#define DIM_PASTE(name, n) DIM_PASTE_(name, n)
+#define DIM_PASTE(name, n)  DIM_PASTE_(name, n)
 /* DIM_NAME(cells_build) is cells_build_2d or cells_build_3d. Headers of the particle code
  * rename their public functions with it, so callers write the plain name. */
 #define DIM_NAME(name) DIM_PASTE(name, DIM)

@@ -6,11 +6,11 @@
 #include <math.h>
 
 typedef struct {
-    double h;         /* smoothing length */
-    double support2;  /* (2h)^2 */
+    double h;        /* smoothing length */
+    double support2; /* (2h)^2 */
     double inv_h;
-    double norm;      /* a_n: 7/(4 pi h^2) in 2D, 21/(16 pi h^3) in 3D */
-    double f_norm;    /* 5 a_n / h^2, the prefactor of F */
+    double norm;   /* a_n: 7/(4 pi h^2) in 2D, 21/(16 pi h^3) in 3D */
+    double f_norm; /* 5 a_n / h^2, the prefactor of F */
 } kernel;
 
 static inline kernel kernel_make(double h)

@@ -11,11 +11,11 @@ typedef struct {
     size_t n_fluid, n_total, capacity;
 
     /* state of every particle (ghosts: mirrored from their source each RK stage) */
-    int64_t *id;           /* global id of the fluid particle (a ghost: its source's) */
-    double *x[DIM];        /* position, tank frame */
-    double *u[DIM];        /* velocity, tank frame; ghosts: free-slip image */
-    double *u_wall[DIM];   /* velocity seen by the viscous term and the velocity gradient:
-                              the fluid's own, or the ghost's no-slip / free-slip image */
+    int64_t *id;               /* global id of the fluid particle (a ghost: its source's) */
+    double *x[DIM];            /* position, tank frame */
+    double *u[DIM];            /* velocity, tank frame; ghosts: free-slip image */
+    double *u_wall[DIM];       /* velocity seen by the viscous term and the velocity gradient:
+                                  the fluid's own, or the ghost's no-slip / free-slip image */
     double *rho, *p, *m, *vol; /* density, pressure (EOS), mass, SPH volume m/rho */
 
     /* per-step fields, frozen over the RK stages (sec. 2.4); ghosts copy their source's */
@@ -31,9 +31,9 @@ typedef struct {
     uint8_t *ghost_walls;  /* bit 2d: mirrored across the low wall of axis d; bit 2d+1: high */
 } particles;
 
-#define particles_init DIM_NAME(particles_init)
-#define particles_free DIM_NAME(particles_free)
-#define particles_reserve DIM_NAME(particles_reserve)
+#define particles_init          DIM_NAME(particles_init)
+#define particles_free          DIM_NAME(particles_free)
+#define particles_reserve       DIM_NAME(particles_reserve)
 #define particles_permute_fluid DIM_NAME(particles_permute_fluid)
 
 /* Allocates room for `capacity` particles (fluid + ghosts); all counts 0. Returns 0 or -1. */

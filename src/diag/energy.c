@@ -37,7 +37,8 @@ void diagnostics_compute(solver *s, diagnostics *out)
     out->eint = sum_term(s, TERM_EINT, 0);
     out->mass = sum_term(s, TERM_MASS, 0);
     out->vol_sph = sum_term(s, TERM_VOLUME, 0);
-    for (int d = 0; d < 3; d++) out->com[d] = d < DIM ? sum_term(s, TERM_MOMENT, d) / out->mass : 0.0;
+    for (int d = 0; d < 3; d++)
+        out->com[d] = d < DIM ? sum_term(s, TERM_MOMENT, d) / out->mass : 0.0;
     out->xmin = reduce_min(p->x[0], n);
     out->xmax = reduce_max(p->x[0], n);
     out->ymax = reduce_max(p->x[1], n);

@@ -29,8 +29,8 @@ int health_check(const solver *s, char *msg, size_t msg_len)
         if (i < first && particle_verdict(s, i) != SOUND) first = i;
     if (first == SIZE_MAX) return 0;
     size_t i = first;
-    int len = snprintf(msg, msg_len, "breakdown at t = %.9g s, step %ld: particle id %lld ",
-                       s->t, s->step, (long long)p->id[i]);
+    int len = snprintf(msg, msg_len, "breakdown at t = %.9g s, step %ld: particle id %lld ", s->t,
+                       s->step, (long long)p->id[i]);
     if (len < 0 || (size_t)len >= msg_len) return 1;
     char *rest = msg + len;
     size_t room = msg_len - (size_t)len;

@@ -13,9 +13,9 @@ typedef struct {
 /* Creates the file and writes the header line. Returns 0 or -1. */
 int csv_open(csv_file *c, const char *path, const char *header);
 void csv_close(csv_file *c);
-void csv_put(csv_file *c, double value);   /* %.10g */
+void csv_put(csv_file *c, double value); /* %.10g */
 void csv_put_long(csv_file *c, long value);
-void csv_put_empty(csv_file *c);           /* a quantity not computed in this run */
+void csv_put_empty(csv_file *c);                  /* a quantity not computed in this run */
 void csv_put_text(csv_file *c, const char *text); /* quoted when it holds , or " */
 void csv_end_row(csv_file *c);
 

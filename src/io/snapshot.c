@@ -21,8 +21,7 @@ static const char temp_suffix[] = ".tmp";
 
 static void set_err(char *err, size_t err_len, const char *fmt, ...)
 {
-    if (!err || err_len == 0)
-        return;
+    if (!err || err_len == 0) return;
     va_list ap;
     va_start(ap, fmt);
     vsnprintf(err, err_len, fmt, ap);
@@ -46,8 +45,7 @@ typedef struct {
  * driver); the API-level entries only say which call failed. */
 static herr_t hdf5_innermost(unsigned n, const H5E_error2_t *e, void *detail)
 {
-    if (n == 0 && e->desc)
-        snprintf(detail, HDF5_DETAIL_LEN, "%s", e->desc);
+    if (n == 0 && e->desc) snprintf(detail, HDF5_DETAIL_LEN, "%s", e->desc);
     return 0;
 }
 
@@ -56,8 +54,7 @@ static herr_t hdf5_innermost(unsigned n, const H5E_error2_t *e, void *detail)
 static herr_t hdf5_capture(hid_t stack, void *client)
 {
     report *r = client;
-    if (!r->hdf5[0])
-        H5Ewalk2(stack, H5E_WALK_UPWARD, hdf5_innermost, r->hdf5);
+    if (!r->hdf5[0]) H5Ewalk2(stack, H5E_WALK_UPWARD, hdf5_innermost, r->hdf5);
     return 0;
 }
 
@@ -84,10 +81,7 @@ static void fail_hdf5(const report *r, const char *what, const char *name)
 /* ---------------------------------------------------------------------------------------- */
 /* Field types                                                                               */
 
-static size_t field_elem_size(field_type t)
-{
-    return t == FIELD_INT32 ? 4 : 8;
-}
+static size_t field_elem_size(field_type t) { return t == FIELD_INT32 ? 4 : 8; }
 
 static hid_t field_mem_type(field_type t)
 {
@@ -130,8 +124,8 @@ static int check_fields(size_t n, const snapshot_field *fields, int n_fields, ch
             return -1;
         }
         if (!field_type_valid(f->type) || f->ncomp < 1 || f->ncomp > 3) {
-            set_err(err, err_len, "snapshot: field '%s' has a bad type or %d components",
-                    f->name, f->ncomp);
+            set_err(err, err_len, "snapshot: field '%s' has a bad type or %d components", f->name,
+                    f->ncomp);
             return -1;
         }
         for (int c = 0; c < f->ncomp && n > 0; ++c) {
@@ -179,14 +173,12 @@ static int write_scalar_attr(hid_t loc, const char *name, hid_t file_type, hid_t
                              const void *value)
 {
     hid_t space = H5Screate(H5S_SCALAR);
-    if (space < 0)
-        return -1;
+    if (space < 0) return -1;
     hid_t attr = H5Acreate2(loc, name, file_type, space, H5P_DEFAULT, H5P_DEFAULT);
     int rc = -1;
     if (attr >= 0) {
         rc = H5Awrite(attr, mem_type, value) < 0 ? -1 : 0;
-        if (H5Aclose(attr) < 0)
-            rc = -1;
+        if (H5Aclose(attr) < 0) rc = -1;
     }
     H5Sclose(space);
     return rc;
@@ -197,11 +189,9 @@ static int write_scalar_attr(hid_t loc, const char *name, hid_t file_type, hid_t
  * still gives a valid (size 1) type. */
 static int write_string_attr(hid_t loc, const char *name, const char *text)
 {
-    if (!text)
-        text = "";
+    if (!text) text = "";
     hid_t type = H5Tcopy(H5T_C_S1);
-    if (type < 0)
-        return -1;
+    if (type < 0) return -1;
     int rc = -1;
     if (H5Tset_size(type, strlen(text) + 1) >= 0 && H5Tset_strpad(type, H5T_STR_NULLTERM) >= 0 &&
         H5Tset_cset(type, H5T_CSET_ASCII) >= 0)
@@ -243,15 +233,13 @@ static int write_attrs(hid_t file, const snapshot_attrs *a, const report *r)
 /* Copies `rows` elements of size es from a contiguous array into every `stride`-th slot of
  * dst. The constant-size memcpy compiles to plain loads/stores and copies the bits exactly
  * (NaN payloads included), without type-punning the caller's arrays. */
-static void copy_strided(unsigned char *dst, size_t stride, const unsigned char *src,
-                         size_t rows, size_t es)
+static void copy_strided(unsigned char *dst, size_t stride, const unsigned char *src, size_t rows,
+                         size_t es)
 {
     if (es == 8) {
-        for (size_t i = 0; i < rows; ++i)
-            memcpy(dst + i * stride * 8, src + i * 8, 8);
+        for (size_t i = 0; i < rows; ++i) memcpy(dst + i * stride * 8, src + i * 8, 8);
     } else {
-        for (size_t i = 0; i < rows; ++i)
-            memcpy(dst + i * stride * 4, src + i * 4, 4);
+        for (size_t i = 0; i < rows; ++i) memcpy(dst + i * stride * 4, src + i * 4, 4);
     }
 }
 
@@ -260,14 +248,13 @@ static hid_t create_dataset(hid_t file, const char *name, field_type type, size_
 {
     hsize_t dims[2] = {n, (hsize_t)ncomp};
     hid_t space = H5Screate_simple(ncomp > 1 ? 2 : 1, dims, NULL);
-    if (space < 0)
-        return H5I_INVALID_HID;
+    if (space < 0) return H5I_INVALID_HID;
     /* no modification times in the object headers: the same state gives the same bytes
        (runs are compared byte for byte, design §2) */
     hid_t dcpl = H5Pcreate(H5P_DATASET_CREATE);
     H5Pset_obj_track_times(dcpl, 0);
-    hid_t dset = H5Dcreate2(file, name, field_file_type(type), space, H5P_DEFAULT, dcpl,
-                            H5P_DEFAULT);
+    hid_t dset =
+        H5Dcreate2(file, name, field_file_type(type), space, H5P_DEFAULT, dcpl, H5P_DEFAULT);
     H5Pclose(dcpl);
     H5Sclose(space);
     return dset;
@@ -281,17 +268,14 @@ static int write_rows(hid_t dset, field_type type, int ncomp, size_t row0, size_
     const int rank = ncomp > 1 ? 2 : 1;
     hsize_t start[2] = {row0, 0}, count[2] = {rows, (hsize_t)ncomp};
     hid_t file_space = H5Dget_space(dset);
-    if (file_space < 0)
-        return -1;
+    if (file_space < 0) return -1;
     hid_t mem_space = H5I_INVALID_HID;
     int rc = -1;
     if (H5Sselect_hyperslab(file_space, H5S_SELECT_SET, start, NULL, count, NULL) >= 0 &&
         (mem_space = H5Screate_simple(rank, count, NULL)) >= 0)
-        rc = H5Dwrite(dset, field_mem_type(type), mem_space, file_space, H5P_DEFAULT, buf) < 0
-                 ? -1
-                 : 0;
-    if (mem_space >= 0)
-        H5Sclose(mem_space);
+        rc = H5Dwrite(dset, field_mem_type(type), mem_space, file_space, H5P_DEFAULT, buf) < 0 ? -1
+                                                                                               : 0;
+    if (mem_space >= 0) H5Sclose(mem_space);
     H5Sclose(file_space);
     return rc;
 }
@@ -302,14 +286,13 @@ static int write_vector_data(hid_t dset, const snapshot_field *f, size_t n)
     const size_t es = field_elem_size(f->type), nc = (size_t)f->ncomp;
     const size_t block = n < INTERLEAVE_ROWS ? n : INTERLEAVE_ROWS;
     unsigned char *buf = malloc(block * nc * es);
-    if (!buf)
-        return -1;
+    if (!buf) return -1;
     int rc = 0;
     for (size_t row0 = 0; rc == 0 && row0 < n; row0 += block) {
         const size_t rows = n - row0 < block ? n - row0 : block;
         for (size_t c = 0; c < nc; ++c)
-            copy_strided(buf + c * es, nc, (const unsigned char *)f->component[c] + row0 * es,
-                         rows, es);
+            copy_strided(buf + c * es, nc, (const unsigned char *)f->component[c] + row0 * es, rows,
+                         es);
         rc = write_rows(dset, f->type, f->ncomp, row0, rows, buf);
     }
     free(buf);
@@ -319,8 +302,7 @@ static int write_vector_data(hid_t dset, const snapshot_field *f, size_t n)
 static int write_field(hid_t file, const snapshot_field *f, size_t n)
 {
     hid_t dset = create_dataset(file, f->name, f->type, n, f->ncomp);
-    if (dset < 0)
-        return -1;
+    if (dset < 0) return -1;
     int rc = 0;
     if (n > 0) { /* an empty dataset has nothing to write, and no buffer to point at */
         if (f->ncomp == 1)
@@ -331,8 +313,7 @@ static int write_field(hid_t file, const snapshot_field *f, size_t n)
         else
             rc = write_vector_data(dset, f, n);
     }
-    if (H5Dclose(dset) < 0)
-        rc = -1;
+    if (H5Dclose(dset) < 0) rc = -1;
     return rc;
 }
 
@@ -347,12 +328,10 @@ static void fill_vertices(void *buf, field_type type, size_t row0, size_t rows)
 {
     if (type == FIELD_INT32) {
         int32_t *v = buf;
-        for (size_t i = 0; i < rows; ++i)
-            v[i] = (int32_t)(row0 + i);
+        for (size_t i = 0; i < rows; ++i) v[i] = (int32_t)(row0 + i);
     } else {
         int64_t *v = buf;
-        for (size_t i = 0; i < rows; ++i)
-            v[i] = (int64_t)(row0 + i);
+        for (size_t i = 0; i < rows; ++i) v[i] = (int64_t)(row0 + i);
     }
 }
 
@@ -361,8 +340,7 @@ static int write_vertices(hid_t file, size_t n)
 {
     const field_type type = vertices_type(n);
     hid_t dset = create_dataset(file, SNAPSHOT_VERTICES_DATASET, type, n, 1);
-    if (dset < 0)
-        return -1;
+    if (dset < 0) return -1;
     const size_t block = n < INTERLEAVE_ROWS ? n : INTERLEAVE_ROWS;
     void *buf = n > 0 ? malloc(block * field_elem_size(type)) : NULL;
     int rc = (n > 0 && !buf) ? -1 : 0;
@@ -372,8 +350,7 @@ static int write_vertices(hid_t file, size_t n)
         rc = write_rows(dset, type, 1, row0, rows, buf);
     }
     free(buf);
-    if (H5Dclose(dset) < 0)
-        rc = -1;
+    if (H5Dclose(dset) < 0) rc = -1;
     return rc;
 }
 
@@ -381,8 +358,7 @@ static int write_vertices(hid_t file, size_t n)
 static int write_contents(hid_t file, size_t n, const snapshot_field *fields, int n_fields,
                           const snapshot_attrs *attrs, const report *r)
 {
-    if (write_attrs(file, attrs, r) < 0)
-        return -1;
+    if (write_attrs(file, attrs, r) < 0) return -1;
     for (int i = 0; i < n_fields; ++i) {
         if (write_field(file, &fields[i], n) < 0) {
             fail_hdf5(r, "cannot write dataset", fields[i].name);
@@ -396,9 +372,8 @@ static int write_contents(hid_t file, size_t n, const snapshot_field *fields, in
     return 0;
 }
 
-static int write_h5_file(const char *path, const char *tmp, size_t n,
-                         const snapshot_field *fields, int n_fields, const snapshot_attrs *attrs,
-                         const report *r)
+static int write_h5_file(const char *path, const char *tmp, size_t n, const snapshot_field *fields,
+                         int n_fields, const snapshot_attrs *attrs, const report *r)
 {
     hid_t file = H5Fcreate(tmp, H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
     if (file < 0) {
@@ -429,8 +404,7 @@ int snapshot_write(const char *path, size_t n, const snapshot_field *fields, int
         set_err(err, err_len, "snapshot: no path or attributes given");
         return -1;
     }
-    if (check_fields(n, fields, n_fields, err, err_len) < 0)
-        return -1;
+    if (check_fields(n, fields, n_fields, err, err_len) < 0) return -1;
     char *tmp = temp_path_for(path);
     if (!tmp) {
         set_err(err, err_len, "snapshot: out of memory");
@@ -464,14 +438,13 @@ static void xml_puts(FILE *out, const char *s)
 }
 
 /* One HDF DataItem: `file:/name`, typed from the field so ParaView reads the right bytes. */
-static void xdmf_data_item(FILE *out, const char *indent, const char *file,
-                           const snapshot_field *f, size_t n)
+static void xdmf_data_item(FILE *out, const char *indent, const char *file, const snapshot_field *f,
+                           size_t n)
 {
     const char *number_type = f->type == FIELD_DOUBLE ? "Float" : "Int";
     fprintf(out, "%s<DataItem Format=\"HDF\" NumberType=\"%s\" Precision=\"%zu\" Dimensions=\"%zu",
             indent, number_type, field_elem_size(f->type), n);
-    if (f->ncomp > 1)
-        fprintf(out, " %d", f->ncomp);
+    if (f->ncomp > 1) fprintf(out, " %d", f->ncomp);
     fputs("\">", out);
     xml_puts(out, file);
     fputs(":/", out);
@@ -487,8 +460,7 @@ static void xdmf_attribute(FILE *out, const char *file, const snapshot_field *f,
 {
     fputs("        <Attribute Name=\"", out);
     xml_puts(out, f->name);
-    fprintf(out, "\" AttributeType=\"%s\" Center=\"Node\">\n",
-            f->ncomp > 1 ? "Vector" : "Scalar");
+    fprintf(out, "\" AttributeType=\"%s\" Center=\"Node\">\n", f->ncomp > 1 ? "Vector" : "Scalar");
     xdmf_data_item(out, "          ", file, f, n);
     fputs("        </Attribute>\n", out);
 }
@@ -512,22 +484,19 @@ static void xdmf_grid(FILE *out, int k, const char *file, double time, size_t n,
     xdmf_data_item(out, "          ", file, position, n);
     fputs("        </Geometry>\n", out);
     for (int i = 0; i < n_fields; ++i)
-        if (&fields[i] != position)
-            xdmf_attribute(out, file, &fields[i], n);
+        if (&fields[i] != position) xdmf_attribute(out, file, &fields[i], n);
     fputs("      </Grid>\n", out);
 }
 
 static const snapshot_field *find_position(const snapshot_field *fields, int n_fields, int dim)
 {
     for (int i = 0; i < n_fields; ++i)
-        if (strcmp(fields[i].name, "position") == 0 && fields[i].ncomp == dim)
-            return &fields[i];
+        if (strcmp(fields[i].name, "position") == 0 && fields[i].ncomp == dim) return &fields[i];
     return NULL;
 }
 
-static void xdmf_document(FILE *out, int n_snapshots, const char *const *files,
-                          const double *times, const size_t *counts,
-                          const snapshot_field *fields, int n_fields,
+static void xdmf_document(FILE *out, int n_snapshots, const char *const *files, const double *times,
+                          const size_t *counts, const snapshot_field *fields, int n_fields,
                           const snapshot_field *position, int dim)
 {
     fputs("<?xml version=\"1.0\" ?>\n"

@@ -15,8 +15,7 @@ static inline double diffusion_rho_pair(double delta_ij, double rho_i, double rh
 }
 
 /* nu^delta_i = (C_delta l)^2 ||D_i|| (Eq. 5) */
-static inline double diffusion_coefficient(double c_delta, double filter_length,
-                                           double strain_norm)
+static inline double diffusion_coefficient(double c_delta, double filter_length, double strain_norm)
 {
     double ls = c_delta * filter_length;
     return ls * ls * strain_norm;

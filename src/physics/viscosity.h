@@ -5,7 +5,7 @@
 
 #include "core/vec.h"
 
-#define SMAGORINSKY_CS 0.18  /* C_S, sec. 2.2 */
+#define SMAGORINSKY_CS    0.18 /* C_S, sec. 2.2 */
 #define VAN_DRIEST_A_PLUS 26.0
 
 /* K (mu + mu^T_ij) pi_ij grad_i W_ij V_j, K = 2(n+2), pi_ij = u_ji . r_ji / |r_ji|^2

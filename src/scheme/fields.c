@@ -5,9 +5,9 @@
 
 /* Sums of one particle over its neighbours for the renormalized gradients (theory §2). */
 typedef struct {
-    mat l;                /* L_i = sum r_ji (x) r_ji F V_j, Eq. (10) */
-    vec drho;             /* sum (rho_j - rho_i) r_ji F V_j */
-    double du[DIM][DIM];  /* du[a][b] = sum (u_j - u_i)_a (r_ji)_b F V_j */
+    mat l;               /* L_i = sum r_ji (x) r_ji F V_j, Eq. (10) */
+    vec drho;            /* sum (rho_j - rho_i) r_ji F V_j */
+    double du[DIM][DIM]; /* du[a][b] = sum (u_j - u_i)_a (r_ji)_b F V_j */
 } gradient_sums;
 
 static inline void gradient_sums_add(gradient_sums *s, vec r_ji, double fv, double drho, vec du)
@@ -89,19 +89,20 @@ static void density_diffusion(const physics_params *pp, particles *p, const neig
             double r2 = vec_norm2(r_ji);
             if (r2 >= k->support2) continue;
             double delta_ij = harmonic_mean_capped(nui, p->nu_delta[j], pp->delta_cap);
-            sum += diffusion_rho_pair(delta_ij, rhoi, p->rho[j], gi, vec_load(p->grad_rho, j),
-                                      r_ji, kernel_f(k, sqrt(r2)), p->vol[j]);
+            sum += diffusion_rho_pair(delta_ij, rhoi, p->rho[j], gi, vec_load(p->grad_rho, j), r_ji,
+                                      kernel_f(k, sqrt(r2)), p->vol[j]);
         }
         p->diff_rho[i] = sum;
     }
 }
 
-void fields_compute(const physics_params *pp, const tank *t, particles *p,
-                    const neighbour_list *nl, vec g_eff)
+void fields_compute(const physics_params *pp, const tank *t, particles *p, const neighbour_list *nl,
+                    vec g_eff)
 {
     geometry_and_gradients(pp, t, p, nl);
     tank_mirror_step_fields(t, p, g_eff, pp->c0);
-    if (pp->c_delta > 0.0) density_diffusion(pp, p, nl);
+    if (pp->c_delta > 0.0)
+        density_diffusion(pp, p, nl);
     else
         for (size_t i = 0; i < p->n_fluid; i++) p->diff_rho[i] = 0.0;
 }

@@ -13,7 +13,7 @@
 
 /* Needs the ghosts refreshed; fills lambda, grad_rho, nu_t, nu_delta of fluid and ghosts and
  * diff_rho of the fluid. */
-void fields_compute(const physics_params *pp, const tank *t, particles *p,
-                    const neighbour_list *nl, vec g_eff);
+void fields_compute(const physics_params *pp, const tank *t, particles *p, const neighbour_list *nl,
+                    vec g_eff);
 
 #endif

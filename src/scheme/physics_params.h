@@ -9,14 +9,14 @@ typedef struct {
     kernel k;
     double dr;
     double rho0, c0;
-    double nu;            /* kinematic viscosity */
-    double filter_length; /* l = 2h, the LES filter length (sec. 2.2) */
-    double c_delta;       /* C_delta of Eq. (5); 0: no density diffusion (Standard SPH) */
-    double delta_cap;     /* upper bound of delta_ij: delta l c0 = 0.1 l c0 (sec. 2.2) */
-    double nu_t_cap;      /* upper bound of mu^T_ij / rho0: 0.1 l c0 / K (sec. 2.2) */
+    double nu;                 /* kinematic viscosity */
+    double filter_length;      /* l = 2h, the LES filter length (sec. 2.2) */
+    double c_delta;            /* C_delta of Eq. (5); 0: no density diffusion (Standard SPH) */
+    double delta_cap;          /* upper bound of delta_ij: delta l c0 = 0.1 l c0 (sec. 2.2) */
+    double nu_t_cap;           /* upper bound of mu^T_ij / rho0: 0.1 l c0 / K (sec. 2.2) */
     double lambda_renormalize; /* use L^-1 in gradients only when lambda exceeds this */
-    bool les;             /* Smagorinsky eddy viscosity */
-    bool van_driest;      /* damp it near no-slip walls */
+    bool les;                  /* Smagorinsky eddy viscosity */
+    bool van_driest;           /* damp it near no-slip walls */
 } physics_params;
 
 #endif

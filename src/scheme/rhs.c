@@ -27,8 +27,8 @@ static inline void rhs_particle(const physics_params *pp, const particles *p,
         force = vec_add(force, pressure_pair(pi, p->p[j], r_ji, f, vj));
         double mu_eff = mu;
         if (les) mu_eff += pp->rho0 * harmonic_mean_capped(nuti, p->nu_t[j], pp->nu_t_cap);
-        force = vec_add(force, viscosity_pair(mu_eff, vec_sub(vec_load(p->u_wall, j), uwi), r_ji,
-                                              r2, f, vj));
+        force = vec_add(
+            force, viscosity_pair(mu_eff, vec_sub(vec_load(p->u_wall, j), uwi), r_ji, r2, f, vj));
     }
     out->drho[i] = drho + p->diff_rho[i];
     vec acc = vec_axpy(g_eff, 1.0 / rhoi, force);
@@ -39,8 +39,8 @@ static inline void rhs_particle(const physics_params *pp, const particles *p,
     out->dm[i] = 0.0;
 }
 
-void rhs_compute(const physics_params *pp, const particles *p, const neighbour_list *nl,
-                 vec g_eff, const rates *out)
+void rhs_compute(const physics_params *pp, const particles *p, const neighbour_list *nl, vec g_eff,
+                 const rates *out)
 {
     if (pp->les) {
 #pragma omp parallel for schedule(static)

@@ -9,17 +9,17 @@
 
 /* Time derivatives of the integrated fluid state. */
 typedef struct {
-    double *dx[DIM];  /* dr/dt = u + du */
-    double *du[DIM];  /* du/dt */
-    double *drho;     /* drho/dt */
-    double *dm;       /* dm/dt */
+    double *dx[DIM]; /* dr/dt = u + du */
+    double *du[DIM]; /* du/dt */
+    double *drho;    /* drho/dt */
+    double *dm;      /* dm/dt */
 } rates;
 
 #define rhs_compute DIM_NAME(rhs_compute)
 
 /* Needs fluid p, vol, u_wall and the ghosts refreshed for this stage, and the frozen per-step
  * fields. g_eff = g - a_tank(t) is the body force in the tank frame (theory §6). */
-void rhs_compute(const physics_params *pp, const particles *p, const neighbour_list *nl,
-                 vec g_eff, const rates *out);
+void rhs_compute(const physics_params *pp, const particles *p, const neighbour_list *nl, vec g_eff,
+                 const rates *out);
 
 #endif

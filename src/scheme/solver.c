@@ -20,7 +20,7 @@ static void physics_setup(solver *s)
     pp->nu = cfg->viscosity;
     pp->filter_length = 2.0 * s->dv.h;
     pp->c_delta = mp.c_delta;
-    pp->delta_cap = 0.1 * pp->filter_length * pp->c0;                  /* sec. 2.2 */
+    pp->delta_cap = 0.1 * pp->filter_length * pp->c0;                    /* sec. 2.2 */
     pp->nu_t_cap = 0.1 * pp->filter_length * pp->c0 / (2.0 * (DIM + 2)); /* sec. 2.2 */
     pp->lambda_renormalize = 0.2; /* theory §2 (guessed there; kept) */
     pp->les = cfg->les;

@@ -26,26 +26,26 @@ typedef struct {
     neighbour_list nl;
 
     /* RK4 work arrays over the fluid */
-    double *y0[RK_VARS];   /* state at the start of the step */
-    double *sum[RK_VARS];  /* weighted sum of the stage rates */
-    rates k;               /* rates of the current stage */
-    double *scratch;       /* n_fluid doubles */
-    size_t *order;         /* n_fluid sort permutation */
+    double *y0[RK_VARS];  /* state at the start of the step */
+    double *sum[RK_VARS]; /* weighted sum of the stage rates */
+    rates k;              /* rates of the current stage */
+    double *scratch;      /* n_fluid doubles */
+    size_t *order;        /* n_fluid sort permutation */
 
     double t, dt;
     long step;
-    double max_acc;        /* largest |du/dt| of the last step (dt_a of Eq. 8) */
-    double skin;           /* neighbour-list margin of this step */
+    double max_acc;          /* largest |du/dt| of the last step (dt_a of Eq. 8) */
+    double skin;             /* neighbour-list margin of this step */
     double max_displacement; /* largest move of a particle during the last step */
-    double work_in;        /* integral of the input power -sum m a_tank . u */
+    double work_in;          /* integral of the input power -sum m a_tank . u */
 } solver;
 
-#define solver_init DIM_NAME(solver_init)
-#define solver_free DIM_NAME(solver_free)
-#define solver_step DIM_NAME(solver_step)
-#define solver_g_eff DIM_NAME(solver_g_eff)
+#define solver_init       DIM_NAME(solver_init)
+#define solver_free       DIM_NAME(solver_free)
+#define solver_step       DIM_NAME(solver_step)
+#define solver_g_eff      DIM_NAME(solver_g_eff)
 #define solver_update_eos DIM_NAME(solver_update_eos)
-#define lattice_fill DIM_NAME(lattice_fill)
+#define lattice_fill      DIM_NAME(lattice_fill)
 
 /* Particles on a lattice filling the liquid box with the hydrostatic state (sec. 2.1).
  * Returns 0, or 2 with a message. */

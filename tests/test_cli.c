@@ -1,0 +1,571 @@
+/* The vcsph command as a user meets it (design §1-§3): the real binary, run in a temporary
+ * folder with its stdout and stderr in files. Bad input of every kind exits 2 with one message
+ * naming where the mistake is and writes nothing; `check` prints the derived numbers and writes
+ * nothing; `run` writes the files of design §1 with the time series of §4; a numerical
+ * breakdown exits 3 and leaves a snapshot and an event behind. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include <cmocka.h>
+
+#include <dirent.h>
+#include <errno.h>
+#include <fcntl.h>
+#include <ftw.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "core/config.h"
+
+#include "check.h"
+#include "table.h"
+
+#ifndef VCSPH_BINARY
+#error "VCSPH_BINARY must name the vcsph executable (CMake defines it)"
+#endif
+
+extern char **environ;
+
+/* ---- fixture: one temporary folder per test, the child's working directory ----------------- */
+
+typedef struct {
+    char dir[256];
+    const void *row; /* the bad-input case of a table-driven test */
+} fixture;
+
+static int setup(void **state)
+{
+    fixture *fx = calloc(1, sizeof *fx);
+    if (!fx) return -1;
+    fx->row = *state;
+    const char *tmp = getenv("TMPDIR");
+    snprintf(fx->dir, sizeof fx->dir, "%s/vcsph-cli-XXXXXX", tmp && *tmp ? tmp : "/tmp");
+    if (!mkdtemp(fx->dir)) {
+        free(fx);
+        return -1;
+    }
+    *state = fx;
+    return 0;
+}
+
+static int remove_entry(const char *path, const struct stat *st, int flag, struct FTW *ftw)
+{
+    (void)st, (void)flag, (void)ftw;
+    return remove(path);
+}
+
+static int teardown(void **state)
+{
+    fixture *fx = *state;
+    int rc = nftw(fx->dir, remove_entry, 16, FTW_DEPTH | FTW_PHYS);
+    free(fx);
+    return rc;
+}
+
+/* ---- helpers -------------------------------------------------------------------------------- */
+
+static void path_in(const fixture *fx, const char *name, char *buf, size_t size)
+{
+    snprintf(buf, size, "%s/%s", fx->dir, name);
+}
+
+static void write_file(const fixture *fx, const char *name, const char *text)
+{
+    char path[512];
+    path_in(fx, name, path, sizeof path);
+    FILE *f = fopen(path, "w");
+    assert_non_null(f);
+    assert_true(fputs(text, f) != EOF);
+    assert_int_equal(fclose(f), 0);
+}
+
+/* The whole file as a string (empty if it cannot be read); free() it. */
+static char *read_file(const fixture *fx, const char *name)
+{
+    char path[512];
+    path_in(fx, name, path, sizeof path);
+    FILE *f = fopen(path, "r");
+    char *text = NULL;
+    size_t len = 0;
+    FILE *mem = open_memstream(&text, &len);
+    assert_non_null(mem);
+    if (f) {
+        char buf[4096];
+        size_t n;
+        while ((n = fread(buf, 1, sizeof buf, f)) > 0) fwrite(buf, 1, n, mem);
+        fclose(f);
+    }
+    fclose(mem);
+    return text;
+}
+
+static bool is_regular_file(const fixture *fx, const char *name)
+{
+    char path[512];
+    struct stat st;
+    path_in(fx, name, path, sizeof path);
+    return stat(path, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0;
+}
+
+static bool exists(const fixture *fx, const char *name)
+{
+    char path[512];
+    struct stat st;
+    path_in(fx, name, path, sizeof path);
+    return lstat(path, &st) == 0;
+}
+
+/* Runs vcsph with argv[1..] (NULL-terminated) in the fixture's folder, stdout and stderr into
+ * stdout.txt and stderr.txt there. Returns the exit status, or -1 when a signal killed it. */
+static int run_vcsph(const fixture *fx, const char *const *args)
+{
+    const char *argv[32] = {VCSPH_BINARY};
+    int argc = 1;
+    for (; args[argc - 1]; argc++) {
+        assert_true(argc < 31);
+        argv[argc] = args[argc - 1];
+    }
+    argv[argc] = NULL;
+    fflush(NULL);
+    pid_t pid = fork();
+    assert_true(pid >= 0);
+    if (pid == 0) {
+        /* the child: only async-signal-safe calls until execv */
+        if (chdir(fx->dir)) _exit(126);
+        int out = open("stdout.txt", O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        int err = open("stderr.txt", O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        if (out < 0 || err < 0 || dup2(out, 1) < 0 || dup2(err, 2) < 0) _exit(126);
+        close(out);
+        close(err);
+        execve(VCSPH_BINARY, (char *const *)argv, environ);
+        _exit(127);
+    }
+    int status;
+    while (waitpid(pid, &status, 0) < 0)
+        if (errno != EINTR) fail_msg("waitpid: %s", strerror(errno));
+    if (WIFSIGNALED(status)) {
+        print_error("vcsph died of signal %d\n", WTERMSIG(status));
+        return -1;
+    }
+    int rc = WEXITSTATUS(status);
+    assert_true(rc != 126 && rc != 127); /* the child could not start vcsph */
+    return rc;
+}
+
+static void assert_contains(const char *text, const char *part)
+{
+    if (!strstr(text, part)) fail_msg("expected \"%s\" in:\n%s", part, text);
+}
+
+/* The line after `line`, NULL at the end of the text. */
+static const char *next_line(const char *line)
+{
+    const char *nl = strchr(line, '\n');
+    return nl && nl[1] ? nl + 1 : NULL;
+}
+
+static int count_lines(const char *text)
+{
+    int n = 0;
+    for (const char *p = text; *p; p++) n += *p == '\n';
+    return n;
+}
+
+/* Fails unless the fixture's folder holds exactly the entries in `expected` (NULL-ended):
+ * "nothing written" means no output folder, no out/<name>, no stray file anywhere. */
+static void assert_folder_holds(const fixture *fx, const char *const *expected)
+{
+    DIR *d = opendir(fx->dir);
+    assert_non_null(d);
+    int seen = 0, n_expected = 0;
+    while (expected[n_expected]) n_expected++;
+    struct dirent *e;
+    char unexpected[1024] = "";
+    while ((e = readdir(d))) {
+        if (!strcmp(e->d_name, ".") || !strcmp(e->d_name, "..")) continue;
+        bool known = false;
+        for (int k = 0; k < n_expected; k++) known |= !strcmp(e->d_name, expected[k]);
+        if (known)
+            seen++;
+        else
+            snprintf(unexpected + strlen(unexpected), sizeof unexpected - strlen(unexpected), " %s",
+                     e->d_name);
+    }
+    closedir(d);
+    if (unexpected[0]) fail_msg("unexpected entries in the working folder:%s", unexpected);
+    assert_int_equal(seen, n_expected);
+}
+
+/* ---- bad input: exit 2, one message that says where, nothing written (design §2) ------------- */
+
+/* The good case that the bad ones vary; line numbers in the comments on the right. */
+#define BASE_CASE                                                                                  \
+    "[case]\n"         /* 1 */                                                                     \
+    "name = base\n"    /* 2 */                                                                     \
+    "t_end = 0.05\n"   /* 3 */                                                                     \
+    "[tank]\n"         /* 4 */                                                                     \
+    "length = 0.2\n"   /* 5 */                                                                     \
+    "height = 0.1\n"   /* 6 */                                                                     \
+    "[liquid]\n"       /* 7 */                                                                     \
+    "height = 0.05\n"  /* 8 */                                                                     \
+    "[numerics]\n"     /* 9 */                                                                     \
+    "resolution = 8\n" /* 10 */
+
+typedef struct {
+    const char *name;
+    const char *case_text; /* written to bad.ini */
+    const char *args[8];   /* after the binary's name; "res" is the output folder */
+    const char *expect[4]; /* substrings of stderr: file:line, key, hint */
+} bad_case;
+
+#define RUN_BAD "run", "bad.ini", "-o", "res", "--quiet"
+
+static const bad_case bad_cases[] = {
+    {"unknown_section",
+     BASE_CASE "[bogus]\nkey = 1\n",
+     {RUN_BAD, NULL},
+     {"bad.ini:11:", "[bogus]"}},
+    {"unknown_key_did_you_mean",
+     "[case]\nname = base\nt_end = 0.05\n[tank]\nlength = 0.2\nheight = 0.1\nlenght = 0.3\n"
+     "[liquid]\nheight = 0.05\n[numerics]\nresolution = 8\n",
+     {RUN_BAD, NULL},
+     {"bad.ini:7:", "tank.lenght", "did you mean", "tank.length"}},
+    /* a missing key has no line of its own: the message points at its section's header */
+    {"missing_required_key",
+     "[case]\nname = base\nt_end = 0.05\n[tank]\nlength = 0.2\nheight = 0.1\n[liquid]\n"
+     "height = 0.05\n[numerics]\n",
+     {RUN_BAD, NULL},
+     {"bad.ini:9:", "numerics.resolution", "required"}},
+    {"negative_tank_length",
+     "[case]\nname = base\nt_end = 0.05\n[tank]\nlength = -0.2\nheight = 0.1\n[liquid]\n"
+     "height = 0.05\n[numerics]\nresolution = 8\n",
+     {RUN_BAD, NULL},
+     {"bad.ini:5:", "tank.length", "-0.2"}},
+    {"liquid_higher_than_tank",
+     "[case]\nname = base\nt_end = 0.05\n[tank]\nlength = 0.2\nheight = 0.1\n[liquid]\n"
+     "height = 0.15\n[numerics]\nresolution = 8\n",
+     {RUN_BAD, NULL},
+     {"bad.ini:8:", "liquid.height", "tank.height"}},
+    {"resolution_3",
+     "[case]\nname = base\nt_end = 0.05\n[tank]\nlength = 0.2\nheight = 0.1\n[liquid]\n"
+     "height = 0.05\n[numerics]\nresolution = 3\n",
+     {RUN_BAD, NULL},
+     {"bad.ini:10:", "numerics.resolution", "= 3"}},
+    {"dim_4",
+     "[case]\nname = base\ndim = 4\nt_end = 0.05\n[tank]\nlength = 0.2\nheight = 0.1\n"
+     "[liquid]\nheight = 0.05\n[numerics]\nresolution = 8\n",
+     {RUN_BAD, NULL},
+     {"bad.ini:3:", "case.dim", "2 or 3"}},
+    {"unknown_scheme",
+     BASE_CASE "[model]\nscheme = delta-plus-all\n",
+     {RUN_BAD, NULL},
+     {"bad.ini:12:", "model.scheme", "delta-plus-all", "delta-plus-ale"}},
+    /* --set values have no file line: the message names --set and the key instead */
+    {"malformed_set",
+     BASE_CASE,
+     {RUN_BAD, "--set", "numerics.resolution", NULL},
+     {"--set", "numerics.resolution", "section.key=value"}},
+    {"set_unknown_key",
+     BASE_CASE,
+     {RUN_BAD, "--set", "numerics.resolutoin=12", NULL},
+     {"--set", "numerics.resolutoin", "did you mean", "numerics.resolution"}},
+    /* the remaining three have no line or key to name: the file, command or option it is */
+    {"case_file_missing",
+     BASE_CASE,
+     {"run", "missing.ini", "-o", "res", "--quiet", NULL},
+     {"missing.ini", "cannot open"}},
+    {"unknown_command",
+     BASE_CASE,
+     {"frobnicate", "bad.ini", "-o", "res", NULL},
+     {"frobnicate", "run, check"}},
+    {"unknown_option",
+     BASE_CASE,
+     {"run", "bad.ini", "-o", "res", "--frob", NULL},
+     {"--frob", "--set"}},
+};
+#define N_BAD (sizeof bad_cases / sizeof bad_cases[0])
+
+static void test_bad_input(void **state)
+{
+    fixture *fx = *state;
+    const bad_case *bc = fx->row;
+    write_file(fx, "bad.ini", bc->case_text);
+    int rc = run_vcsph(fx, bc->args);
+    char *out = read_file(fx, "stdout.txt"), *err = read_file(fx, "stderr.txt");
+    if (rc != 2) print_error("%s: stderr:\n%s", bc->name, err);
+    assert_int_equal(rc, 2); /* design §2: bad input exits 2 */
+    for (int k = 0; k < 4 && bc->expect[k]; k++) assert_contains(err, bc->expect[k]);
+    assert_int_equal(count_lines(err), 1); /* "one clear message" */
+    assert_string_equal(out, "");
+    /* nothing written: no output folder, and nothing else in the working folder */
+    assert_false(exists(fx, "res"));
+    assert_folder_holds(fx, (const char *const[]){"bad.ini", "stdout.txt", "stderr.txt", NULL});
+    free(out);
+    free(err);
+}
+
+/* ---- vcsph check ---------------------------------------------------------------------------- */
+
+/* The number after `label` at the start of a line of `text` ("dr      0.00625 m"). */
+static double printed_value(const char *text, const char *label)
+{
+    size_t n = strlen(label);
+    for (const char *line = text; line; line = next_line(line)) {
+        if (strncmp(line, label, n) || line[n] != ' ') continue;
+        char *end;
+        double v = strtod(line + n, &end);
+        if (end != line + n) return v;
+    }
+    fail_msg("no line \"%s <number>\" in:\n%s", label, text);
+    return NAN;
+}
+
+/* Relative rounding of a number printed with `digits` significant digits (%.<digits>g):
+ * at most half a unit of the last digit, i.e. 5 10^-digits of the value. */
+static double printed_tol(double value, int digits)
+{
+    return 5.0 * pow(10.0, -digits) * fabs(value);
+}
+
+static void test_check_prints_derived_numbers(void **state)
+{
+    fixture *fx = *state;
+    /* L/dr = 0.21 / (0.05/8) = 33.6, not an integer: the whole cells that fit, 33 columns
+     * (rounding up would put the last particle beyond the liquid box) */
+    const double L = 0.21, H = 0.05, g = 9.81, A = 0.01, T = 0.8, nu = 1.0e-6, rho0 = 1000.0;
+    const int N = 8;
+    write_file(fx, "check.ini",
+               "[case]\nname = checked\nt_end = 2.0\n"
+               "[tank]\nlength = 0.21\nheight = 0.1\n"
+               "[liquid]\nheight = 0.05\n"
+               "[motion]\ntype = sway\namplitude = 0.01\nperiod = 0.8\n"
+               "[numerics]\nresolution = 8\n");
+    int rc = run_vcsph(fx, (const char *const[]){"check", "check.ini", NULL});
+    char *out = read_file(fx, "stdout.txt"), *err = read_file(fx, "stderr.txt");
+    if (rc) print_error("stderr:\n%s", err);
+    assert_int_equal(rc, 0);
+    assert_string_equal(err, "");
+
+    /* Expected figures from theory: dr = H/N; h = 2 dr in 2D (design §3); sway a_x peaks at
+     * A w^2, so g_max = sqrt(g^2 + (A w^2)^2) (theory §6) and c0 = 10 sqrt(2 g_max H) (Eq. 6);
+     * dt = min(0.125 h^2/nu, 0.25 sqrt(h/g_max), K_c h/c0), K_c = 1.3 for delta-plus-ale
+     * (Eq. 8, Table 1); M_L = rho0 L H, dW = M_L (A w)^2 / (2 T) (Table 3). */
+    const double dr = H / N, h = 2.0 * dr, w = 2.0 * M_PI / T;
+    const double g_max = sqrt(g * g + pow(A * w * w, 2)), c0 = 10.0 * sqrt(2.0 * g_max * H);
+    const double dt = fmin(fmin(0.125 * h * h / nu, 0.25 * sqrt(h / g_max)), 1.3 * h / c0);
+    const double m_l = rho0 * L * H, d_w = 0.5 * m_l * pow(A * w, 2) / T;
+    long n_fluid = (long)floor(L / dr) * N;
+    assert_int_equal(n_fluid, 33 * 8);
+
+    /* Tolerances: the rounding of the printed figures (%.6g, dt %.4g). The sampled g_max may
+     * be low by at most (A w^2)^2 dtheta^2 / (2 g) < 1e-7 relative (test_motion), far below. */
+    assert_close(printed_value(out, "dr"), dr, printed_tol(dr, 6));
+    assert_close(printed_value(out, "h"), h, printed_tol(h, 6));
+    assert_close(printed_value(out, "fluid particles"), (double)n_fluid, 0.0);
+    assert_close(printed_value(out, "c0"), c0, printed_tol(c0, 6));
+    assert_close(printed_value(out, "dt estimate"), dt, printed_tol(dt, 4));
+    assert_close(printed_value(out, "M_L"), m_l, printed_tol(m_l, 6));
+    assert_close(printed_value(out, "dW"), d_w, printed_tol(d_w, 6));
+
+    /* check runs nothing and writes nothing (no out/checked) */
+    assert_folder_holds(fx, (const char *const[]){"check.ini", "stdout.txt", "stderr.txt", NULL});
+    free(out);
+    free(err);
+}
+
+/* ---- vcsph run ------------------------------------------------------------------------------ */
+
+static const char tiny_case[] = "[case]\n"
+                                "name = tiny\n"
+                                "t_end = 0.05\n"
+                                "[tank]\n"
+                                "length = 0.2\n"
+                                "height = 0.1\n"
+                                "[liquid]\n"
+                                "height = 0.05\n"
+                                "[numerics]\n"
+                                "resolution = 8\n"
+                                "[output]\n"
+                                "timeseries_every = 0.01\n"
+                                "snapshot_every = 0.02\n";
+
+/* Design §4, in its order. */
+static const char *const series_columns[] = {
+    "t",      "step",    "dt",       "n_fluid", "eps_v1", "eps_v2",  "eps_v3",
+    "eps_gm", "eps_sph", "mass_err", "eta",     "edbc",   "n_edbc",  "n_free_surface",
+    "ekin",   "epot",    "eint",     "work_in", "ediss",  "com_x",   "com_y",
+    "com_z",  "xmin",    "xmax",     "ymax",    "umax",   "rho_min", "rho_max"};
+#define N_SERIES_COLUMNS (int)(sizeof series_columns / sizeof series_columns[0])
+
+static void test_run_writes_outputs(void **state)
+{
+    fixture *fx = *state;
+    write_file(fx, "tiny.ini", tiny_case);
+    int rc = run_vcsph(fx, (const char *const[]){"run", "tiny.ini", "--set", "case.t_end=0.03",
+                                                 "-o", "res", "--quiet", NULL});
+    char *out = read_file(fx, "stdout.txt"), *err = read_file(fx, "stderr.txt");
+    if (rc) print_error("stderr:\n%s", err);
+    assert_int_equal(rc, 0);
+    /* --quiet: nothing on the terminal, and the log file still written */
+    assert_string_equal(out, "");
+    assert_string_equal(err, "");
+    free(out);
+    free(err);
+
+    static const char *const files[] = {"res/case.ini",      "res/timeseries.csv",
+                                        "res/events.csv",    "res/log.txt",
+                                        "res/snapshots.xmf", "res/snapshots/000000.h5"};
+    for (size_t k = 0; k < sizeof files / sizeof files[0]; k++)
+        if (!is_regular_file(fx, files[k])) fail_msg("%s missing or empty", files[k]);
+    /* -o took the place of output.dir: no out/tiny */
+    assert_folder_holds(fx,
+                        (const char *const[]){"tiny.ini", "res", "stdout.txt", "stderr.txt", NULL});
+    char *xmf = read_file(fx, "res/snapshots.xmf");
+    assert_contains(xmf, "snapshots/000000.h5");
+    free(xmf);
+    char *events = read_file(fx, "res/events.csv");
+    assert_true(strncmp(events, "t,event,detail\n", 15) == 0);
+    free(events);
+
+    /* case.ini is the resolved case with the override applied, and a valid case file */
+    char path[512];
+    path_in(fx, "res/case.ini", path, sizeof path);
+    config cfg;
+    char msg[1024];
+    int load = config_load(&cfg, path, NULL, 0, msg, sizeof msg);
+    if (load) print_error("%s\n", msg);
+    assert_int_equal(load, 0);
+    assert_true(cfg.t_end == 0.03); /* written so that it reads back to the same double */
+    assert_int_equal(cfg.resolution, 8);
+    rc = run_vcsph(fx, (const char *const[]){"check", "res/case.ini", NULL});
+    if (rc) {
+        err = read_file(fx, "stderr.txt");
+        print_error("check res/case.ini:\n%s", err);
+        free(err);
+    }
+    assert_int_equal(rc, 0);
+
+    /* timeseries.csv: the columns of design §4 in order (§4 allows more after them) */
+    path_in(fx, "res/timeseries.csv", path, sizeof path);
+    table ts;
+    assert_int_equal(table_read(&ts, path), 0);
+    assert_true(ts.n_columns >= N_SERIES_COLUMNS);
+    for (int c = 0; c < N_SERIES_COLUMNS; c++) assert_string_equal(ts.names[c], series_columns[c]);
+    /* rows at t = 0 and at the first step past 0.01, 0.02, and the last at t_end = 0.03 */
+    assert_int_equal(ts.n_rows, 4);
+    const double *t = table_column(&ts, "t"), *n_fluid = table_column(&ts, "n_fluid");
+    assert_close(t[0], 0.0, 0.0);
+    /* t_end is reached exactly (the last step is shortened to it); the CSV's %.10g prints
+     * 0.03 as 0.03, so only the parse's rounding remains */
+    assert_close(t[ts.n_rows - 1], 0.03, 1e-12);
+    /* Between: one row per 0.01 s, at the first step past each multiple; no step is longer
+     * than K_c h / c0 (Eq. 8) with K_c = 1.3, h = 2 dr = 0.0125 m, c0 = 10 sqrt(2 g H) */
+    const double dt_c = 1.3 * 0.0125 / (10.0 * sqrt(2.0 * 9.81 * 0.05));
+    for (size_t k = 1; k + 1 < ts.n_rows; k++) {
+        assert_true(t[k] >= 0.01 * (double)k - 1e-12);
+        assert_true(t[k] < 0.01 * (double)k + dt_c);
+    }
+    /* L/dr = 32 exactly: 32 x 8 particles, none lost */
+    for (size_t k = 0; k < ts.n_rows; k++) assert_close(n_fluid[k], 256.0, 0.0);
+    table_free(&ts);
+}
+
+/* ---- numerical breakdown -------------------------------------------------------------------- */
+
+static void test_breakdown_exits_3(void **state)
+{
+    fixture *fx = *state;
+    /* c0 = 0.5 m/s: the hydrostatic density rho0 (1 + g (H - y)/c0^2) (linear EOS, sec. 2.1)
+     * reaches 2.8 rho0 at the deepest particle, far outside the health bound rho0 (1 +- 0.2) */
+    const double rho0 = 1000.0, g = 9.81, H = 0.05, dr = H / 8, c0 = 0.5;
+    write_file(fx, "still.ini",
+               "[case]\nname = still\nt_end = 0.05\n"
+               "[tank]\nlength = 0.2\nheight = 0.1\n"
+               "[liquid]\nheight = 0.05\n"
+               "[numerics]\nresolution = 8\nsound_speed = 0.5\n"
+               "[output]\ntimeseries_every = 0.01\nsnapshot_every = 0.02\n");
+    int rc = run_vcsph(fx, (const char *const[]){"run", "still.ini", "-o", "res", "--quiet", NULL});
+    char *err = read_file(fx, "stderr.txt");
+    assert_int_equal(rc, 3); /* design §2 */
+
+    /* "breakdown at t = <t> s, step <n>: particle id <id> ..." */
+    assert_contains(err, "particle id");
+    const char *at_t = strstr(err, "t = "), *at_step = strstr(err, "step ");
+    const char *at_id = strstr(err, "particle id ");
+    assert_non_null(at_t);
+    assert_non_null(at_step);
+    assert_non_null(at_id);
+    char *end;
+    double t_break = strtod(at_t + 4, &end);
+    assert_true(end != at_t + 4);
+    long step_break = strtol(at_step + 5, &end, 10);
+    assert_true(end != at_step + 5);
+    long id = strtol(at_id + 12, &end, 10);
+    assert_true(end != at_id + 12);
+    assert_true(id >= 0 && id < 256);
+
+    /* The last snapshot that the message names exists */
+    const char *snap = strstr(err, "res/snapshots/");
+    assert_non_null(snap);
+    char snap_name[64];
+    snprintf(snap_name, sizeof snap_name, "%.*s", (int)strcspn(snap, "\n"), snap);
+    assert_true(strlen(snap_name) > strlen("res/snapshots/") + 3);
+    assert_true(is_regular_file(fx, snap_name));
+    free(err);
+
+    /* The time series ends on the broken state: its time and step are those of the message
+     * (%.9g in the message, %.10g in the CSV: relative rounding 5e-9 + 5e-10) */
+    char path[512];
+    path_in(fx, "res/timeseries.csv", path, sizeof path);
+    table ts;
+    assert_int_equal(table_read(&ts, path), 0);
+    assert_true(ts.n_rows >= 1);
+    const double *t = table_column(&ts, "t"), *step = table_column(&ts, "step");
+    const double *rho_max = table_column(&ts, "rho_max");
+    assert_non_null(t);
+    assert_non_null(step);
+    assert_non_null(rho_max);
+    assert_close(t[ts.n_rows - 1], t_break, 5.5e-9 * t_break);
+    assert_close(step[ts.n_rows - 1], (double)step_break, 0.0);
+    /* The premise: at t = 0 the deepest particle, at y = dr/2, already has
+     * rho0 + rho0 g (H - dr/2)/c0^2 = 2839.375 kg/m^3 > 1.2 rho0 (CSV rounding 5e-10) */
+    double rho_deep = rho0 + rho0 * g * (H - 0.5 * dr) / (c0 * c0);
+    assert_close(t[0], 0.0, 0.0);
+    assert_close(rho_max[0], rho_deep, 5e-10 * rho_deep);
+    assert_true(rho_deep > 1.2 * rho0);
+    table_free(&ts);
+
+    /* events.csv has the breakdown, at the time of the message */
+    char *events = read_file(fx, "res/events.csv");
+    bool found = false;
+    for (const char *line = events; line; line = next_line(line)) {
+        double te = strtod(line, &end);
+        if (end == line || strncmp(end, ",breakdown,", 11)) continue;
+        assert_close(te, t_break, 5.5e-9 * t_break);
+        found = true;
+    }
+    if (!found) fail_msg("no breakdown row in events.csv:\n%s", events);
+    free(events);
+}
+
+int main(void)
+{
+    struct CMUnitTest tests[N_BAD + 3];
+    for (size_t k = 0; k < N_BAD; k++)
+        tests[k] = (struct CMUnitTest){bad_cases[k].name, test_bad_input, setup, teardown,
+                                       (void *)&bad_cases[k]};
+    tests[N_BAD] = (struct CMUnitTest)cmocka_unit_test_setup_teardown(
+        test_check_prints_derived_numbers, setup, teardown);
+    tests[N_BAD + 1] = (struct CMUnitTest)cmocka_unit_test_setup_teardown(test_run_writes_outputs,
+                                                                          setup, teardown);
+    tests[N_BAD + 2] =
+        (struct CMUnitTest)cmocka_unit_test_setup_teardown(test_breakdown_exits_3, setup, teardown);
+    return _cmocka_run_group_tests("test_cli", tests, N_BAD + 3, NULL, NULL);
+}

@@ -1,0 +1,316 @@
+/* Tests of the prescribed tank motion (theory §6): the acceleration is the second derivative of
+ * the displacement (sway and heave, with decay and phase), the signs of theory §6, `duration`,
+ * a tabulated motion read through its cubic spline, and the g_max of the sound-speed rule. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include <cmocka.h>
+
+#include <float.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "boundary/motion.h"
+#include "core/config.h"
+
+#include "check.h"
+
+#define PI 3.14159265358979323846
+#define G  9.81
+
+/* A valid case; the motion section is appended. */
+#define CASE_HEAD                                                                                  \
+    "[case]\nt_end = 10.0\n[tank]\nlength = 1.0\nheight = 0.5\n[liquid]\nheight = 0.2\n"           \
+    "[numerics]\nresolution = 20\n"
+
+/* Loads CASE_HEAD + `motion_section` and initialises the motion from it. */
+static void motion_from(motion *mo, const char *motion_section)
+{
+    char text[2048], err[1024];
+    snprintf(text, sizeof text, "%s%s", CASE_HEAD, motion_section);
+    config cfg;
+    int rc = config_load_string(&cfg, text, "motion-test", NULL, 0, err, sizeof err);
+    if (rc) fail_msg("config: %s", err);
+    rc = motion_init(mo, &cfg, err, sizeof err);
+    if (rc) fail_msg("motion_init: %s", err);
+}
+
+static double axis_position(const motion *mo, double t, int axis)
+{
+    double x[3];
+    motion_position(mo, t, x);
+    return x[axis];
+}
+
+static double axis_acceleration(const motion *mo, double t, int axis)
+{
+    double a[3];
+    motion_acceleration(mo, t, a);
+    return a[axis];
+}
+
+/* ---- acceleration = second derivative of the position ------------------------------------- */
+
+/* Central second difference D(t) = (x(t+d) - 2 x(t) + x(t-d)) / d^2 = x''(t) + d^2/12 x''''(s)
+ * for some s in [t-d, t+d] (Taylor with the mean-value remainder). For x = A e^{-lt} f(wt + p),
+ * f = sin or -cos, x'''' = A e^{-lt} Re/Im[(-l + iw)^4 ...], so |x''''| <= A (l^2 + w^2)^2
+ * e^{-l(t-d)}. Rounding: each x is within about (8 + |wt + p|) eps A (exp, sin/cos, products,
+ * and the rounding of the argument wt + p, amplified by |x'| ~ A); the difference adds four
+ * of them and divides by d^2. Tolerance = truncation bound + rounding bound. */
+static void check_second_derivative(const char *motion_section, int axis, double A, double T,
+                                    double decay, double phase)
+{
+    motion mo;
+    motion_from(&mo, motion_section);
+    const double w = 2.0 * PI / T, d = 1e-3;
+    const double x4 = A * pow(decay * decay + w * w, 2);
+    for (int k = 0; k <= 400; k++) {
+        double t = d + 3.0 * T * k / 400.0;
+        double fd = (axis_position(&mo, t + d, axis) - 2.0 * axis_position(&mo, t, axis) +
+                     axis_position(&mo, t - d, axis)) /
+                    (d * d);
+        double a = axis_acceleration(&mo, t, axis);
+        double theta = fabs(w * (t + d) + phase);
+        double tol = d * d / 12.0 * x4 * exp(-decay * (t - d)) +
+                     4.0 * (8.0 + theta) * DBL_EPSILON * A / (d * d);
+        assert_close(a, fd, tol);
+        /* the other axes do not move */
+        for (int other = 0; other < 3; other++)
+            if (other != axis) assert_true(axis_acceleration(&mo, t, other) == 0.0);
+    }
+    /* Guards of the test's own constants, so that the comparison has teeth: the truncation
+     * bound is below 1e-3 of A w^2, and far below the 2 l w A term of the product rule (the
+     * l^2 A term is larger still), so an acceleration missing either would fail above. */
+    assert_true(x4 * d * d / 12.0 < 1e-3 * A * w * w);
+    assert_true(2.0 * decay * w * A > 100.0 * (x4 * d * d / 12.0));
+    motion_free(&mo);
+}
+
+static void test_sway_second_derivative(void **state)
+{
+    (void)state;
+    check_second_derivative("[motion]\ntype = sway\namplitude = 0.02\nperiod = 1.1\n"
+                            "decay = 0.4\nphase = 0.7\n",
+                            0, 0.02, 1.1, 0.4, 0.7);
+}
+
+static void test_heave_second_derivative(void **state)
+{
+    (void)state;
+    check_second_derivative("[motion]\ntype = heave\namplitude = 0.015\nperiod = 0.9\n"
+                            "decay = 0.3\nphase = -1.2\n",
+                            1, 0.015, 0.9, 0.3, -1.2);
+}
+
+/* ---- the formulas and signs of theory §6 --------------------------------------------------- */
+
+/* Positions against theory §6 written out here: sway x = A e^{-lt} sin(wt + p), heave
+ * y = -A e^{-lt} cos(wt + p). Tolerance: a few roundings of values of size A, plus the
+ * rounding of the argument (|wt + p| eps, times |x'|/w ~ A). */
+static void test_positions_follow_theory(void **state)
+{
+    (void)state;
+    const double A = 0.02, T = 1.1, l = 0.4, p = 0.7, w = 2.0 * PI / T;
+    motion sway, heave;
+    motion_from(&sway, "[motion]\ntype = sway\namplitude = 0.02\nperiod = 1.1\ndecay = 0.4\n"
+                       "phase = 0.7\n");
+    motion_from(&heave, "[motion]\ntype = heave\namplitude = 0.02\nperiod = 1.1\ndecay = 0.4\n"
+                        "phase = 0.7\n");
+    for (int k = 0; k <= 50; k++) {
+        double t = 0.1 * k;
+        double tol = (8.0 + fabs(w * t + p)) * DBL_EPSILON * A;
+        assert_close(axis_position(&sway, t, 0), A * exp(-l * t) * sin(w * t + p), tol);
+        assert_close(axis_position(&heave, t, 1), -A * exp(-l * t) * cos(w * t + p), tol);
+        assert_true(axis_position(&sway, t, 1) == 0.0 && axis_position(&heave, t, 0) == 0.0);
+    }
+    motion_free(&sway);
+    motion_free(&heave);
+}
+
+/* Theory §6 with phase 0 and no decay: sway x = A sin wt peaks at T/4, where
+ * a_x = -A w^2 (the tank is pulled back); heave y = -A cos wt is lowest at t = 0, where
+ * a_y = +A w^2 (pushed up). Tolerance: rounding only, a few eps of A w^2. */
+static void test_signs_of_theory(void **state)
+{
+    (void)state;
+    const double A = 0.05, T = 1.6, w = 2.0 * PI / T, aw2 = A * w * w;
+    const double tol = 16.0 * DBL_EPSILON * aw2;
+    motion sway, heave;
+    motion_from(&sway, "[motion]\ntype = sway\namplitude = 0.05\nperiod = 1.6\n");
+    motion_from(&heave, "[motion]\ntype = heave\namplitude = 0.05\nperiod = 1.6\n");
+    assert_close(axis_position(&sway, T / 4.0, 0), A, 16.0 * DBL_EPSILON * A);
+    assert_close(axis_acceleration(&sway, T / 4.0, 0), -aw2, tol);
+    assert_close(axis_acceleration(&sway, 3.0 * T / 4.0, 0), aw2, tol);
+    assert_close(axis_acceleration(&sway, 0.0, 0), 0.0, tol);
+    assert_close(axis_position(&heave, 0.0, 1), -A, 16.0 * DBL_EPSILON * A);
+    assert_close(axis_acceleration(&heave, 0.0, 1), aw2, tol);
+    assert_close(axis_acceleration(&heave, T / 2.0, 1), -aw2, tol);
+    assert_close(axis_acceleration(&heave, T / 4.0, 1), 0.0, tol);
+    motion_free(&sway);
+    motion_free(&heave);
+}
+
+/* ---- duration ------------------------------------------------------------------------------- */
+
+/* design §3: after `duration` the tank acceleration is zero (exactly: no force at all), and
+ * before it the motion is the periodic one (rounding tolerance as above). */
+static void test_duration_stops_acceleration(void **state)
+{
+    (void)state;
+    const double A = 0.02, T = 1.0, w = 2.0 * PI / T, D = 1.7, aw2 = A * w * w;
+    motion sway, heave;
+    motion_from(&sway, "[motion]\ntype = sway\namplitude = 0.02\nperiod = 1.0\nduration = 1.7\n");
+    motion_from(&heave, "[motion]\ntype = heave\namplitude = 0.02\nperiod = 1.0\n"
+                        "duration = 1.0\n");
+    for (int k = 0; k < 100; k++) {
+        double before = D * k / 100.0, after = D + 1e-9 + 0.05 * k;
+        double tol = (16.0 + w * before) * DBL_EPSILON * aw2;
+        assert_close(axis_acceleration(&sway, before, 0), -aw2 * sin(w * before), tol);
+        double a[3];
+        motion_acceleration(&sway, after, a);
+        assert_true(a[0] == 0.0 && a[1] == 0.0 && a[2] == 0.0);
+        motion_acceleration(&heave, 1.0 + 1e-9 + 0.05 * k, a);
+        assert_true(a[0] == 0.0 && a[1] == 0.0 && a[2] == 0.0);
+    }
+    /* just before the end, still moving: |a| = A w^2 |sin(w 1.7)| = 0.95 A w^2 */
+    assert_true(fabs(axis_acceleration(&sway, D - 1e-6, 0)) > 0.9 * aw2);
+    /* Heave stopped at t = T, where its velocity A w sin(wT) is zero: the tank rests at
+     * y(T) = -A from then on (a position consistent with zero acceleration). */
+    for (int k = 1; k < 20; k++)
+        assert_close(axis_position(&heave, 1.0 + 0.1 * k, 1), -A, 16.0 * DBL_EPSILON * A);
+    motion_free(&sway);
+    motion_free(&heave);
+}
+
+/* ---- tabulated motion ----------------------------------------------------------------------- */
+
+/* The table: x = A sin(wt), y = -B cos(wt) at K knots per period over P periods. */
+enum { KNOTS_PER_PERIOD = 200, PERIODS = 3, MARGIN = 20 };
+
+/* The table's folder, made and removed around the test (removed even when it fails). */
+static char table_dir[] = "/tmp/vcsph-motion-XXXXXX";
+static char table_path[sizeof table_dir + 16];
+
+static int table_setup(void **state)
+{
+    (void)state;
+    if (!mkdtemp(table_dir)) return -1;
+    snprintf(table_path, sizeof table_path, "%s/table.csv", table_dir);
+    return 0;
+}
+
+static int table_teardown(void **state)
+{
+    (void)state;
+    remove(table_path);
+    return rmdir(table_dir);
+}
+
+static void test_table_reproduces_acceleration(void **state)
+{
+    (void)state;
+    const double A = 0.03, B = 0.01, T = 1.2, w = 2.0 * PI / T;
+    const double hk = T / KNOTS_PER_PERIOD, theta = w * hk;
+    const char *path = table_path;
+    FILE *f = fopen(path, "w");
+    assert_non_null(f);
+    fputs("t,x,y\n", f);
+    const int n = KNOTS_PER_PERIOD * PERIODS;
+    for (int k = 0; k <= n; k++) {
+        double t = hk * k;
+        fprintf(f, "%.17g,%.17g,%.17g\n", t, A * sin(w * t), -B * cos(w * t));
+    }
+    assert_int_equal(fclose(f), 0);
+    char section[512];
+    snprintf(section, sizeof section, "[motion]\ntype = table\nfile = %s\n", path);
+    motion mo;
+    motion_from(&mo, section);
+    assert_int_equal(mo.n_knots, n + 1);
+
+    /* Spline error for f = sin(wt) on knots hk apart (theta = w hk): the spline's knot values
+     * M_k of f'' solve (M_{k-1} + 4 M_k + M_{k+1})/6 = (f_{k+1} - 2 f_k + f_{k-1})/hk^2, which
+     * for a sinusoid gives M_k = f''_k (1 + theta^2/12 + O(theta^4)); between knots M is
+     * linear, off by at most |f''''| hk^2/8 = w^4 A hk^2/8, of the opposite sign at the peaks.
+     * So |S'' - f''| <= (theta^2/12) A w^2 to leading order; 10% for the O(theta^4) terms.
+     * The natural end conditions (S'' = 0 at the ends; wrong for -cos, whose y'' is B w^2
+     * there) cause an error that decays by 2 - sqrt(3) = 0.27 per knot: after MARGIN = 20
+     * knots it is 0.27^20 = 4e-12 of B w^2, far below. Positions: the spline's error is
+     * O(hk^4): (5/384) hk^4 |f''''| = (5/384) theta^4 A. */
+    const double tol_ax = 1.1 * theta * theta / 12.0 * A * w * w;
+    const double tol_ay = 1.1 * theta * theta / 12.0 * B * w * w;
+    const double tol_x = 5.0 / 384.0 * pow(theta, 4) * A + 1e-15;
+    const double tol_y = 5.0 / 384.0 * pow(theta, 4) * B + 1e-15;
+    double worst = 0.0;
+    for (int k = MARGIN * 4; k <= (n - MARGIN) * 4; k++) {
+        double t = hk * k / 4.0; /* at knots and at quarters between them */
+        double a[3], x[3];
+        motion_acceleration(&mo, t, a);
+        motion_position(&mo, t, x);
+        assert_close(a[0], -A * w * w * sin(w * t), tol_ax);
+        assert_close(a[1], B * w * w * cos(w * t), tol_ay);
+        assert_true(a[2] == 0.0);
+        assert_close(x[0], A * sin(w * t), tol_x);
+        assert_close(x[1], -B * cos(w * t), tol_y);
+        double e = fabs(a[0] + A * w * w * sin(w * t)) / (A * w * w);
+        if (e > worst) worst = e;
+    }
+    /* The estimate is sharp: the error reaches most of theta^2/12 (a spline of lower order,
+     * or a first-order difference, would be far off; a tighter bound would be wrong). */
+    assert_true(worst > 0.8 * theta * theta / 12.0);
+    /* Outside the table the tank does not accelerate */
+    double a[3];
+    motion_acceleration(&mo, hk * n + 0.01, a);
+    assert_true(a[0] == 0.0 && a[1] == 0.0 && a[2] == 0.0);
+    motion_free(&mo);
+}
+
+/* ---- g_max ---------------------------------------------------------------------------------- */
+
+/* g_eff = g - a_tank with g = (0, -g) (theory §6). Heave: |g_eff| = |g + A w^2 cos(wt + p)|,
+ * largest g + A w^2; sway: sqrt(g^2 + (A w^2 sin(wt + p))^2), largest sqrt(g^2 + (A w^2)^2).
+ * A sampled maximum never exceeds the true one (1e-12 for rounding) and, with samples at most
+ * T/2000 apart, misses the peak by at most half a spacing, dtheta = pi/2000, which lowers it by
+ * A w^2 dtheta^2/2 (heave) or (A w^2)^2 dtheta^2 / (2 g_max) (sway). c0 ~ sqrt(g_max) needs no
+ * more. A phase puts the peak between samples. */
+static void test_max_effective_gravity(void **state)
+{
+    (void)state;
+    const double A = 0.04, T = 0.7, w = 2.0 * PI / T, aw2 = A * w * w, dth = PI / 2000.0;
+    motion heave, sway;
+    motion_from(&heave, "[motion]\ntype = heave\namplitude = 0.04\nperiod = 0.7\nphase = 0.123\n");
+    motion_from(&sway, "[motion]\ntype = sway\namplitude = 0.04\nperiod = 0.7\nphase = 0.123\n");
+    double g_heave = motion_max_effective_gravity(&heave, G, 10.0);
+    double g_sway = motion_max_effective_gravity(&sway, G, 10.0);
+    double exact_heave = G + aw2, exact_sway = sqrt(G * G + aw2 * aw2);
+    assert_close(g_heave, exact_heave - 0.5 * aw2 * dth * dth / 2.0,
+                 0.5 * aw2 * dth * dth / 2.0 + 1e-12 * exact_heave);
+    assert_close(g_sway, exact_sway - 0.5 * aw2 * aw2 * dth * dth / (2.0 * exact_sway),
+                 0.5 * aw2 * aw2 * dth * dth / (2.0 * exact_sway) + 1e-12 * exact_sway);
+    /* without motion, g itself */
+    motion none;
+    motion_from(&none, "");
+    assert_true(motion_max_effective_gravity(&none, G, 10.0) == G);
+    motion_free(&heave);
+    motion_free(&sway);
+    motion_free(&none);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_sway_second_derivative),
+        cmocka_unit_test(test_heave_second_derivative),
+        cmocka_unit_test(test_positions_follow_theory),
+        cmocka_unit_test(test_signs_of_theory),
+        cmocka_unit_test(test_duration_stops_acceleration),
+        cmocka_unit_test_setup_teardown(test_table_reproduces_acceleration, table_setup,
+                                        table_teardown),
+        cmocka_unit_test(test_max_effective_gravity),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
