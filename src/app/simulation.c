@@ -301,6 +301,11 @@ int simulation_run_dim(const config *cfg, const run_options *opt)
     log_info("vcsph: %s, %dD, %s, %ld particles, dr = %.4g m, c0 = %.4g m/s, t_end = %g s",
              cfg->name, DIM, config_scheme_name(cfg->scheme), dv->n_fluid, dv->dr, dv->c0,
              cfg->t_end);
+    if (r.s.mo.kind == MOTION_TABLE) /* theory §6: say once how the table was read */
+        log_info("vcsph: motion table %s: %zu rows, t in [%g, %g] s, accelerations from a "
+                 "natural cubic spline (zero outside the table), largest |g - a_tank| = %.4g m/s^2",
+                 cfg->motion_file, r.s.mo.n_knots, r.s.mo.t[0], r.s.mo.t[r.s.mo.n_knots - 1],
+                 dv->g_max);
     log_info("vcsph: output in %s", opt->output_dir);
     r.v0 = dv->v0;
     solver_update_eos(&r.s);

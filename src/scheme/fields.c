@@ -2,6 +2,7 @@
 #include "scheme/fields.h"
 #include "physics/diffusion.h"
 #include "physics/viscosity.h"
+#include "scheme/pair.h"
 
 /* Sums of one particle over its neighbours for the renormalized gradients (theory §2). */
 typedef struct {
@@ -39,14 +40,13 @@ static void geometry_and_gradients(const physics_params *pp, const tank *t, part
         vec xi = vec_load(p->x, i), ui = vec_load(p->u, i);
         double rhoi = p->rho[i];
         gradient_sums s = {mat_zero(), vec_zero(), {{0}}};
-        const int32_t *row = nl->index + i * nl->row_capacity;
+        const int32_t *row = neighbour_row(nl, i);
         for (int32_t n = 0; n < nl->count[i]; n++) {
-            size_t j = (size_t)row[n];
-            vec r_ji = vec_sub(vec_load(p->x, j), xi);
-            double r2 = vec_norm2(r_ji);
-            if (r2 >= k->support2) continue;
-            double fv = kernel_f(k, sqrt(r2)) * p->vol[j];
-            gradient_sums_add(&s, r_ji, fv, p->rho[j] - rhoi, vec_sub(vec_load(p->u_wall, j), ui));
+            pair pr;
+            if (!pair_of(k, p->x, xi, row, n, &pr)) continue;
+            size_t j = pr.j;
+            gradient_sums_add(&s, pr.r_ji, pr.f * p->vol[j], p->rho[j] - rhoi,
+                              vec_sub(vec_load(p->u_wall, j), ui));
         }
         double lambda = mat_min_eigenvalue(&s.l);
         p->lambda[i] = lambda;
@@ -82,15 +82,14 @@ static void density_diffusion(const physics_params *pp, particles *p, const neig
     for (size_t i = 0; i < p->n_fluid; i++) {
         vec xi = vec_load(p->x, i), gi = vec_load(p->grad_rho, i);
         double rhoi = p->rho[i], nui = p->nu_delta[i], sum = 0.0;
-        const int32_t *row = nl->index + i * nl->row_capacity;
+        const int32_t *row = neighbour_row(nl, i);
         for (int32_t n = 0; n < nl->count[i]; n++) {
-            size_t j = (size_t)row[n];
-            vec r_ji = vec_sub(vec_load(p->x, j), xi);
-            double r2 = vec_norm2(r_ji);
-            if (r2 >= k->support2) continue;
+            pair pr;
+            if (!pair_of(k, p->x, xi, row, n, &pr)) continue;
+            size_t j = pr.j;
             double delta_ij = harmonic_mean_capped(nui, p->nu_delta[j], pp->delta_cap);
-            sum += diffusion_rho_pair(delta_ij, rhoi, p->rho[j], gi, vec_load(p->grad_rho, j), r_ji,
-                                      kernel_f(k, sqrt(r2)), p->vol[j]);
+            sum += diffusion_rho_pair(delta_ij, rhoi, p->rho[j], gi, vec_load(p->grad_rho, j),
+                                      pr.r_ji, pr.f, p->vol[j]);
         }
         p->diff_rho[i] = sum;
     }

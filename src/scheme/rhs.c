@@ -3,6 +3,7 @@
 #include "physics/continuity.h"
 #include "physics/pressure.h"
 #include "physics/viscosity.h"
+#include "scheme/pair.h"
 
 /* One particle's sums. `les` is a compile-time constant at each call below, so the loop is
  * specialised once per loop, never tested per pair (design §2). */
@@ -16,19 +17,18 @@ static inline void rhs_particle(const physics_params *pp, const particles *p,
     double mu = pp->rho0 * pp->nu;
     double drho = 0.0;
     vec force = vec_zero(); /* per unit volume */
-    const int32_t *row = nl->index + i * nl->row_capacity;
+    const int32_t *row = neighbour_row(nl, i);
     for (int32_t n = 0; n < nl->count[i]; n++) {
-        size_t j = (size_t)row[n];
-        vec r_ji = vec_sub(vec_load(p->x, j), xi);
-        double r2 = vec_norm2(r_ji);
-        if (r2 >= k->support2) continue;
-        double f = kernel_f(k, sqrt(r2)), vj = p->vol[j];
-        drho += continuity_pair(rhoi, vec_sub(vec_load(p->u, j), ui), r_ji, f, vj);
-        force = vec_add(force, pressure_pair(pi, p->p[j], r_ji, f, vj));
+        pair pr;
+        if (!pair_of(k, p->x, xi, row, n, &pr)) continue;
+        size_t j = pr.j;
+        double vj = p->vol[j];
+        drho += continuity_pair(rhoi, vec_sub(vec_load(p->u, j), ui), pr.r_ji, pr.f, vj);
+        force = vec_add(force, pressure_pair(pi, p->p[j], pr.r_ji, pr.f, vj));
         double mu_eff = mu;
         if (les) mu_eff += pp->rho0 * harmonic_mean_capped(nuti, p->nu_t[j], pp->nu_t_cap);
-        force = vec_add(
-            force, viscosity_pair(mu_eff, vec_sub(vec_load(p->u_wall, j), uwi), r_ji, r2, f, vj));
+        vec uw_ji = vec_sub(vec_load(p->u_wall, j), uwi);
+        force = vec_add(force, viscosity_pair(mu_eff, uw_ji, pr.r_ji, pr.r2, pr.f, vj));
     }
     out->drho[i] = drho + p->diff_rho[i];
     vec acc = vec_axpy(g_eff, 1.0 / rhoi, force);

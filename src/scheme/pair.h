@@ -1,0 +1,35 @@
+/* pair: the geometry of one neighbour pair (i, j), shared by every pair loop: r_ji = r_j - r_i,
+ * |r_ji|^2 and F_ij of grad_i W_ij = r_ji F_ij (theory §1). */
+#ifndef VCSPH_PAIR_H
+#define VCSPH_PAIR_H
+
+#include "core/cells.h"
+#include "core/kernel.h"
+#include "core/vec.h"
+#include <stdbool.h>
+
+typedef struct {
+    size_t j;
+    vec r_ji;
+    double r2, f;
+} pair;
+
+static inline const int32_t *neighbour_row(const neighbour_list *nl, size_t i)
+{
+    return nl->index + i * nl->row_capacity;
+}
+
+/* Entry n of particle i's row; false for a pair beyond 2h (the list's skin), which would add
+ * exactly zero. */
+static inline bool pair_of(const kernel *k, double *const x[DIM], vec xi, const int32_t *row,
+                           int32_t n, pair *pr)
+{
+    pr->j = (size_t)row[n];
+    pr->r_ji = vec_sub(vec_load(x, pr->j), xi);
+    pr->r2 = vec_norm2(pr->r_ji);
+    if (pr->r2 >= k->support2) return false;
+    pr->f = kernel_f(k, sqrt(pr->r2));
+    return true;
+}
+
+#endif
