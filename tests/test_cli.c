@@ -337,8 +337,8 @@ static double printed_tol(double value, int digits)
 static void test_check_prints_derived_numbers(void **state)
 {
     fixture *fx = *state;
-    /* L/dr = 0.21 / (0.05/8) = 33.6, not an integer: the whole cells that fit, 33 columns
-     * (rounding up would put the last particle beyond the liquid box) */
+    /* L/dr = 0.21 / (0.05/8) = 33.6, not an integer: 34 columns, spaced L/34 so that the
+     * lattice fills the liquid box exactly (derived.c) */
     const double L = 0.21, H = 0.05, g = 9.81, A = 0.01, T = 0.8, nu = 1.0e-6, rho0 = 1000.0;
     const int N = 8;
     write_file(fx, "check.ini",
@@ -361,8 +361,8 @@ static void test_check_prints_derived_numbers(void **state)
     const double g_max = sqrt(g * g + pow(A * w * w, 2)), c0 = 10.0 * sqrt(2.0 * g_max * H);
     const double dt = fmin(fmin(0.125 * h * h / nu, 0.25 * sqrt(h / g_max)), 1.3 * h / c0);
     const double m_l = rho0 * L * H, d_w = 0.5 * m_l * pow(A * w, 2) / T;
-    long n_fluid = (long)floor(L / dr) * N;
-    assert_int_equal(n_fluid, 33 * 8);
+    long n_fluid = lround(L / dr) * N;
+    assert_int_equal(n_fluid, 34 * 8);
 
     /* Tolerances: the rounding of the printed figures (%.6g, dt %.4g). The sampled g_max may
      * be low by at most (A w^2)^2 dtheta^2 / (2 g) < 1e-7 relative (test_motion), far below. */

@@ -4,6 +4,7 @@
 #include "core/log.h"
 #include "diag/energy.h"
 #include "diag/health.h"
+#include "diag/volume.h"
 #include "io/csv.h"
 #include "io/snapshot.h"
 #include "scheme/solver.h"
@@ -65,9 +66,13 @@ static void event(run *r, const char *what, const char *detail)
     csv_end_row(&r->events);
 }
 
-static void write_series_row(run *r)
+/* One row of timeseries.csv (design §4). The volume columns need this step's geometry
+ * (solver_prepare at the current state); a breakdown row has none and leaves them empty. */
+static void write_series_row(run *r, int with_geometry)
 {
     solver *s = &r->s;
+    volume_errors ve;
+    if (with_geometry) volume_compute(&s->p, s->dv.v0 / (double)s->p.n_fluid, s->scratch, &ve);
     diagnostics dg;
     diagnostics_compute(s, &dg);
     double energy = dg.ekin + dg.epot + dg.eint;
@@ -75,15 +80,25 @@ static void write_series_row(run *r)
     csv_file *c = &r->timeseries;
     csv_put(c, s->t);
     csv_put_long(c, s->step);
-    csv_put(c, s->dt);
+    csv_put(c, s->last_dt);
     csv_put_long(c, (long)s->p.n_fluid);
-    for (int k = 0; k < 4; k++) csv_put_empty(c); /* eps_v1..3, eps_gm: volume issue */
+    if (with_geometry) {
+        csv_put(c, ve.eps_v1);
+        csv_put(c, ve.eps_v2);
+        csv_put(c, ve.eps_v3);
+    } else {
+        for (int k = 0; k < 3; k++) csv_put_empty(c);
+    }
+    csv_put_empty(c); /* eps_gm: output.graphical */
     csv_put(c, dg.vol_sph / r->v0 - 1.0);
     csv_put(c, dg.mass / r->mass0 - 1.0);
     csv_put(c, 0.0);    /* eta */
     csv_put(c, 0.0);    /* edbc */
     csv_put_long(c, 0); /* n_edbc */
-    csv_put_empty(c);   /* n_free_surface: volume issue */
+    if (with_geometry)
+        csv_put_long(c, ve.n_free_surface);
+    else
+        csv_put_empty(c);
     csv_put(c, dg.ekin);
     csv_put(c, dg.epot);
     csv_put(c, dg.eint);
@@ -109,7 +124,7 @@ static void write_series_row(run *r)
     r->speed_warned = fast;
 }
 
-/* The fields of design §5 that exist so far. */
+/* The fields of design §5 (lambda, surface and eps_vi from the geometry of this step). */
 static int snapshot_fields(solver *s, snapshot_field *f)
 {
     particles *p = &s->p;
@@ -126,6 +141,11 @@ static int snapshot_fields(solver *s, snapshot_field *f)
     f[n++] = (snapshot_field){"mass", FIELD_DOUBLE, 1, {p->m}};
     f[n++] = (snapshot_field){"volume", FIELD_DOUBLE, 1, {p->vol}};
     f[n++] = (snapshot_field){"lambda", FIELD_DOUBLE, 1, {p->lambda}};
+    f[n++] = (snapshot_field){"surface", FIELD_UINT8, 1, {p->surface}};
+    /* the local volume error, computed into scratch just before writing */
+    double cell = s->dv.v0 / (double)p->n_fluid;
+    for (size_t i = 0; i < p->n_fluid; i++) s->scratch[i] = volume_local_error(p, i, cell);
+    f[n++] = (snapshot_field){"eps_vi", FIELD_DOUBLE, 1, {s->scratch}};
     f[n] = (snapshot_field){"shifting", FIELD_DOUBLE, DIM, {0}};
     for (int d = 0; d < DIM; d++) f[n].component[d] = p->shift[d];
     n++;
@@ -229,7 +249,7 @@ static int outputs_due(run *r, int last)
 {
     const config *cfg = r->cfg;
     double t = r->s.t;
-    if (output_due(t, cfg->timeseries_every, &r->next_series, last)) write_series_row(r);
+    if (output_due(t, cfg->timeseries_every, &r->next_series, last)) write_series_row(r, 1);
     if (cfg->snapshot_every > 0 && output_due(t, cfg->snapshot_every, &r->next_snapshot, last))
         return write_snapshot(r);
     return 0;
@@ -243,11 +263,19 @@ static int breakdown(run *r)
     progress_clear(&r->pr);
     log_error("vcsph: %s", msg);
     event(r, "breakdown", msg);
-    write_series_row(r);
+    write_series_row(r, 0);
     if (write_snapshot(r) == 0)
         log_error("vcsph: last state written to %s/snapshots/%06d.h5", r->opt->output_dir,
                   r->n_snapshots - 1);
     return 1;
+}
+
+static int prepare(run *r)
+{
+    if (solver_prepare(&r->s, r->cfg->t_end) == 0) return 0;
+    progress_clear(&r->pr);
+    log_error("vcsph: out of memory at step %ld", r->s.step);
+    return -1;
 }
 
 static int time_loop(run *r)
@@ -258,18 +286,17 @@ static int time_loop(run *r)
     progress_start(&r->pr, cfg->t_end, s->p.n_fluid, s->step, r->opt->quiet);
     /* the initial state too: a sound speed too low for the hydrostatic column fails here */
     if (breakdown(r)) return RUN_BREAKDOWN;
+    if (prepare(r) || outputs_due(r, 0)) return RUN_FAILED;
     while (s->t < cfg->t_end) {
-        if (solver_step(s, cfg->t_end)) {
-            progress_clear(&r->pr);
-            log_error("vcsph: out of memory at step %ld", s->step);
-            return RUN_FAILED;
-        }
+        solver_advance(s, cfg->t_end);
         if (s->max_displacement > 0.5 * s->skin) {
             snprintf(msg, sizeof msg, "a particle moved %.3g m > skin/2 = %.3g m in one step",
                      s->max_displacement, 0.5 * s->skin);
             event(r, "neighbour_skin_exceeded", msg);
         }
         if (breakdown(r)) return RUN_BREAKDOWN;
+        /* the next step's neighbours and geometry are also this state's diagnostics */
+        if (prepare(r)) return RUN_FAILED;
         int last = s->t >= cfg->t_end;
         if (outputs_due(r, last)) return RUN_FAILED;
         progress_update(&r->pr, s->t, s->step, last);
@@ -313,7 +340,7 @@ int simulation_run_dim(const config *cfg, const run_options *opt)
     diagnostics_compute(&r.s, &dg);
     r.mass0 = dg.mass;
     double wall0 = progress_wall_time();
-    status = outputs_due(&r, 0) ? RUN_FAILED : time_loop(&r);
+    status = time_loop(&r);
     double wall = progress_wall_time() - wall0;
     if (status == RUN_OK)
         log_info("vcsph: done: %ld steps in %.1f s (%.3g particle-steps/s); output in %s", r.s.step,

@@ -6,7 +6,7 @@ int lattice_fill(particles *p, const config *cfg, const derived *dv)
 {
     size_t n = (size_t)dv->n_fluid;
     if (particles_reserve(p, n + n / 2 + 64)) return -1;
-    double dr = dv->dr, cell_volume = pow(dr, DIM);
+    double cell_volume = dv->v0 / (double)n;
     double surface = cfg->liquid_y0 + cfg->liquid_height;
     double origin[3] = {cfg->liquid_x0, cfg->liquid_y0, 0.0};
     size_t i = 0;
@@ -15,7 +15,7 @@ int lattice_fill(particles *p, const config *cfg, const derived *dv)
             for (long c0 = 0; c0 < dv->n_axis[0]; c0++, i++) {
                 long c[3] = {c0, c1, c2};
                 for (int d = 0; d < DIM; d++) {
-                    p->x[d][i] = origin[d] + (c[d] + 0.5) * dr;
+                    p->x[d][i] = origin[d] + (c[d] + 0.5) * dv->spacing[d];
                     p->u[d][i] = 0.0;
                 }
                 double pressure = cfg->density * cfg->gravity * (surface - p->x[1][i]);

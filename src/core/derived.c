@@ -11,13 +11,24 @@ void derived_compute(const config *cfg, const motion *mo, derived *dv)
     double dr = cfg->liquid_height / cfg->resolution;
     dv->dr = dr;
     dv->h = cfg->h_over_dr * dr;
-    /* whole cells that fit in the liquid box: rounding up could put the last particle on
-       (or past) the wall; the relative 1e-9 keeps an exact fit from losing a cell */
-    dv->n_axis[0] = (long)floor(cfg->liquid_length / dr * (1.0 + 1e-9));
-    dv->n_axis[1] = cfg->resolution;
-    dv->n_axis[2] = cfg->dim == 3 ? (long)floor(cfg->tank_width / dr * (1.0 + 1e-9)) : 1;
+    /* The lattice fills the liquid box exactly (V0 = L H W, sec. 3): a whole number of
+       particles along each axis, spaced dr along y and within dr / (2 n) of dr along x and z.
+       A square lattice of spacing dr would leave a gap of up to dr/2 at one wall, where the
+       kernel sums of Eq. (11) read a spurious +28 % volume at t = 0. */
+    double extent[3] = {cfg->liquid_length, cfg->liquid_height, cfg->tank_width};
+    dv->v0 = 1.0;
+    for (int d = 0; d < 3; d++) {
+        if (d == 2 && cfg->dim == 2) {
+            dv->n_axis[d] = 1;
+            dv->spacing[d] = 1.0;
+            continue;
+        }
+        long n = d == 1 ? cfg->resolution : lround(extent[d] / dr);
+        dv->n_axis[d] = n < 1 ? 1 : n;
+        dv->spacing[d] = extent[d] / (double)dv->n_axis[d];
+        dv->v0 *= extent[d];
+    }
     dv->n_fluid = dv->n_axis[0] * dv->n_axis[1] * dv->n_axis[2];
-    dv->v0 = (double)dv->n_fluid * pow(dr, cfg->dim);
 
     dv->g_max = motion_max_effective_gravity(mo, cfg->gravity, cfg->t_end);
     /* Eq. (6) with U_max the speed of a fall from H under g_max */
@@ -57,6 +68,11 @@ void derived_print(const config *cfg, const derived *dv, FILE *out)
     else
         fprintf(out, "fluid particles  %ld (%ld x %ld x %ld)\n", dv->n_fluid, dv->n_axis[0],
                 dv->n_axis[1], dv->n_axis[2]);
+    if (dv->spacing[0] != dv->dr || (cfg->dim == 3 && dv->spacing[2] != dv->dr)) {
+        fprintf(out, "lattice spacing  %.6g x %.6g", dv->spacing[0], dv->spacing[1]);
+        if (cfg->dim == 3) fprintf(out, " x %.6g", dv->spacing[2]);
+        fprintf(out, " m (fills the liquid box exactly)\n");
+    }
     fprintf(out, "V0               %.6g m^%d\n", dv->v0, cfg->dim);
     fprintf(out, "g_max            %.6g m/s^2\n", dv->g_max);
     fprintf(out, "c0               %.6g m/s%s\n", dv->c0, cfg->sound_speed > 0 ? "" : " (auto)");

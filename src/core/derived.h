@@ -9,8 +9,11 @@
 typedef struct {
     double dr, h;   /* spacing H/N and smoothing length */
     long n_axis[3]; /* lattice particles along x, y, z (z: 1 in 2D) */
+    double spacing[3]; /* lattice spacing per axis: dr along y; along x (z) the liquid length
+                          (tank width) over a whole number of particles, within dr/(2 n) of dr */
     long n_fluid;
-    double v0;                          /* initial particle volume N dr^n (per unit width in 2D) */
+    double v0;                          /* initial liquid volume L H W = N x the cell volume
+                                           (per unit width in 2D) */
     double g_max;                       /* largest effective gravity of the motion */
     double c0;                          /* sound speed, given or 10 sqrt(2 g_max H) (Eq. 6) */
     double k_c;                         /* CFL number (Table 1 unless given) */

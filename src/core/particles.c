@@ -14,6 +14,7 @@ static int double_arrays(particles *p, double ***out)
         out[n++] = &p->u_wall[d];
         out[n++] = &p->grad_rho[d];
         out[n++] = &p->shift[d];
+        out[n++] = &p->normal[d];
     }
     out[n++] = &p->rho;
     out[n++] = &p->p;
@@ -23,10 +24,13 @@ static int double_arrays(particles *p, double ***out)
     out[n++] = &p->nu_delta;
     out[n++] = &p->lambda;
     out[n++] = &p->diff_rho;
+    out[n++] = &p->normal_raw;
+    out[n++] = &p->kernel_sum;
+    out[n++] = &p->gamma;
     return n;
 }
 
-#define MAX_ARRAYS (5 * DIM + 8)
+#define MAX_ARRAYS (6 * DIM + 11)
 
 static int grow(void **ptr, size_t count, size_t size)
 {
@@ -45,7 +49,9 @@ int particles_reserve(particles *p, size_t capacity)
         if (grow((void **)arrays[k], capacity, sizeof(double))) return -1;
     if (grow((void **)&p->id, capacity, sizeof(int64_t)) ||
         grow((void **)&p->ghost_source, capacity, sizeof(int32_t)) ||
-        grow((void **)&p->ghost_walls, capacity, sizeof(uint8_t)))
+        grow((void **)&p->ghost_walls, capacity, sizeof(uint8_t)) ||
+        grow((void **)&p->surface, capacity, sizeof(uint8_t)) ||
+        grow((void **)&p->is_free, capacity, sizeof(uint8_t)))
         return -1;
     /* new slots start as zeros: shifting and lambda are read before anything writes them */
     for (int k = 0; k < n; k++)
@@ -68,6 +74,8 @@ void particles_free(particles *p)
     free(p->id);
     free(p->ghost_source);
     free(p->ghost_walls);
+    free(p->surface);
+    free(p->is_free);
     memset(p, 0, sizeof *p);
 }
 

@@ -23,6 +23,12 @@ typedef struct {
     double *nu_t;          /* Smagorinsky eddy viscosity with van Driest damping, m^2/s */
     double *nu_delta;      /* diffusion coefficient nu^delta of Eq. (5), m^2/s */
     double *lambda;        /* smallest eigenvalue of L, Eq. (10) (fluid) */
+    double *normal[DIM];   /* unit normal -L^-1 sum grad W V, out of the fluid (theory §4) */
+    double *normal_raw;    /* |L^-1 sum grad W V| before normalising */
+    double *kernel_sum;    /* sum_j W_ij, self included: 1 / geometric volume, Eq. (11) */
+    double *gamma;         /* Gamma_i = sum_j W_ij V_j, self included, Eq. (A.2) */
+    uint8_t *surface;      /* 0 interior, 1 in S_F, 2 free surface (Marrone et al. 2010) */
+    uint8_t *is_free;      /* the free-surface test alone, read while `surface` is written */
     double *shift[DIM];    /* shifting velocity delta-u, Eq. (7) (zero until shifting exists) */
     double *diff_rho;      /* density diffusion D^rho of Eq. (5) (fluid) */
 

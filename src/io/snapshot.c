@@ -81,7 +81,10 @@ static void fail_hdf5(const report *r, const char *what, const char *name)
 /* ---------------------------------------------------------------------------------------- */
 /* Field types                                                                               */
 
-static size_t field_elem_size(field_type t) { return t == FIELD_INT32 ? 4 : 8; }
+static size_t field_elem_size(field_type t)
+{
+    return t == FIELD_UINT8 ? 1 : (t == FIELD_INT32 ? 4 : 8);
+}
 
 static hid_t field_mem_type(field_type t)
 {
@@ -89,6 +92,7 @@ static hid_t field_mem_type(field_type t)
     case FIELD_DOUBLE: return H5T_NATIVE_DOUBLE;
     case FIELD_INT64: return H5T_NATIVE_INT64;
     case FIELD_INT32: return H5T_NATIVE_INT32;
+    case FIELD_UINT8: return H5T_NATIVE_UINT8;
     }
     return H5I_INVALID_HID;
 }
@@ -100,13 +104,14 @@ static hid_t field_file_type(field_type t)
     case FIELD_DOUBLE: return H5T_IEEE_F64LE;
     case FIELD_INT64: return H5T_STD_I64LE;
     case FIELD_INT32: return H5T_STD_I32LE;
+    case FIELD_UINT8: return H5T_STD_U8LE;
     }
     return H5I_INVALID_HID;
 }
 
 static bool field_type_valid(field_type t)
 {
-    return t == FIELD_DOUBLE || t == FIELD_INT64 || t == FIELD_INT32;
+    return t == FIELD_DOUBLE || t == FIELD_INT64 || t == FIELD_INT32 || t == FIELD_UINT8;
 }
 
 static int check_fields(size_t n, const snapshot_field *fields, int n_fields, char *err,
@@ -238,8 +243,10 @@ static void copy_strided(unsigned char *dst, size_t stride, const unsigned char 
 {
     if (es == 8) {
         for (size_t i = 0; i < rows; ++i) memcpy(dst + i * stride * 8, src + i * 8, 8);
-    } else {
+    } else if (es == 4) {
         for (size_t i = 0; i < rows; ++i) memcpy(dst + i * stride * 4, src + i * 4, 4);
+    } else {
+        for (size_t i = 0; i < rows; ++i) dst[i * stride] = src[i];
     }
 }
 
@@ -441,7 +448,8 @@ static void xml_puts(FILE *out, const char *s)
 static void xdmf_data_item(FILE *out, const char *indent, const char *file, const snapshot_field *f,
                            size_t n)
 {
-    const char *number_type = f->type == FIELD_DOUBLE ? "Float" : "Int";
+    const char *number_type =
+        f->type == FIELD_DOUBLE ? "Float" : (f->type == FIELD_UINT8 ? "UChar" : "Int");
     fprintf(out, "%s<DataItem Format=\"HDF\" NumberType=\"%s\" Precision=\"%zu\" Dimensions=\"%zu",
             indent, number_type, field_elem_size(f->type), n);
     if (f->ncomp > 1) fprintf(out, " %d", f->ncomp);

@@ -1,22 +1,31 @@
 /* fields: per-step geometry and the frozen diffusion terms. */
 #include "scheme/fields.h"
+#include "diag/freesurface.h"
 #include "physics/diffusion.h"
 #include "physics/viscosity.h"
 #include "scheme/pair.h"
 
-/* Sums of one particle over its neighbours for the renormalized gradients (theory §2). */
+/* Sums of one particle over its neighbours: the geometry (Eqs. 10, 11, A.2) and the raw
+ * sums of the renormalized gradients (theory §2). */
 typedef struct {
     mat l;               /* L_i = sum r_ji (x) r_ji F V_j, Eq. (10) */
+    vec grad_one;        /* sum r_ji F V_j = sum grad_i W_ij V_j: -normal before L^-1 */
+    double w, wv;        /* sum W_ij and sum W_ij V_j (self terms added after) */
     vec drho;            /* sum (rho_j - rho_i) r_ji F V_j */
     double du[DIM][DIM]; /* du[a][b] = sum (u_j - u_i)_a (r_ji)_b F V_j */
-} gradient_sums;
+} neighbour_sums;
 
-static inline void gradient_sums_add(gradient_sums *s, vec r_ji, double fv, double drho, vec du)
+static inline void neighbour_sums_add(neighbour_sums *s, const pair *pr, double w, double vol_j,
+                                      double drho, vec du)
 {
-    mat_add_outer(&s->l, fv, r_ji, r_ji);
-    s->drho = vec_axpy(s->drho, drho * fv, r_ji);
+    double fv = pr->f * vol_j;
+    mat_add_outer(&s->l, fv, pr->r_ji, pr->r_ji);
+    s->grad_one = vec_axpy(s->grad_one, fv, pr->r_ji);
+    s->w += w;
+    s->wv += w * vol_j;
+    s->drho = vec_axpy(s->drho, drho * fv, pr->r_ji);
     for (int a = 0; a < DIM; a++)
-        for (int b = 0; b < DIM; b++) s->du[a][b] += du.c[a] * r_ji.c[b] * fv;
+        for (int b = 0; b < DIM; b++) s->du[a][b] += du.c[a] * pr->r_ji.c[b] * fv;
 }
 
 /* ||D|| = sqrt(2 D:D), D the symmetric part of the velocity gradient G[a][b] = du_a/dx_b */
@@ -39,20 +48,26 @@ static void geometry_and_gradients(const physics_params *pp, const tank *t, part
     for (size_t i = 0; i < p->n_fluid; i++) {
         vec xi = vec_load(p->x, i), ui = vec_load(p->u, i);
         double rhoi = p->rho[i];
-        gradient_sums s = {mat_zero(), vec_zero(), {{0}}};
+        neighbour_sums s = {mat_zero(), vec_zero(), 0.0, 0.0, vec_zero(), {{0}}};
         const int32_t *row = neighbour_row(nl, i);
         for (int32_t n = 0; n < nl->count[i]; n++) {
             pair pr;
             if (!pair_of(k, p->x, xi, row, n, &pr)) continue;
             size_t j = pr.j;
-            gradient_sums_add(&s, pr.r_ji, pr.f * p->vol[j], p->rho[j] - rhoi,
-                              vec_sub(vec_load(p->u_wall, j), ui));
+            neighbour_sums_add(&s, &pr, kernel_w(k, sqrt(pr.r2)), p->vol[j], p->rho[j] - rhoi,
+                               vec_sub(vec_load(p->u_wall, j), ui));
         }
         double lambda = mat_min_eigenvalue(&s.l);
         p->lambda[i] = lambda;
+        p->kernel_sum[i] = s.w + k->norm; /* self term W(0) */
+        p->gamma[i] = s.wv + k->norm * p->vol[i];
         /* near-singular L (drops, jets): fall back to the plain gradient (theory §2) */
         mat l_inv = mat_identity();
         if (lambda > pp->lambda_renormalize) mat_inverse(&s.l, &l_inv);
+        vec normal = vec_scale(mat_mul_vec(&l_inv, s.grad_one), -1.0);
+        double normal_norm = vec_norm(normal);
+        p->normal_raw[i] = normal_norm;
+        vec_store(p->normal, i, normal_norm > 0.0 ? vec_scale(normal, 1.0 / normal_norm) : normal);
         vec_store(p->grad_rho, i, mat_mul_vec(&l_inv, s.drho));
         double g[DIM][DIM];
         for (int a = 0; a < DIM; a++) {
@@ -99,6 +114,7 @@ void fields_compute(const physics_params *pp, const tank *t, particles *p, const
                     vec g_eff)
 {
     geometry_and_gradients(pp, t, p, nl);
+    freesurface_detect(&pp->k, pp->dr, pp->normal_reference, p, nl);
     tank_mirror_step_fields(t, p, g_eff, pp->c0);
     if (pp->c_delta > 0.0)
         density_diffusion(pp, p, nl);

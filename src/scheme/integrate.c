@@ -107,17 +107,23 @@ static double max_displacement(solver *s)
     return reduce_max(s->scratch, p->n_fluid);
 }
 
-int solver_step(solver *s, double t_stop)
+int solver_prepare(solver *s, double t_stop)
+{
+    double dt = time_step(s);
+    if (s->t + dt > t_stop) dt = t_stop - s->t;
+    s->dt = dt;
+    if (build_neighbours(s, dt)) return -1;
+    fields_compute(&s->pp, &s->tank, &s->p, &s->nl, solver_g_eff(s, s->t));
+    return 0;
+}
+
+void solver_advance(solver *s, double t_stop)
 {
     static const double stage_c[4] = {0.0, 0.5, 0.5, 1.0};
     static const double stage_w[4] = {1.0 / 6.0, 1.0 / 3.0, 1.0 / 3.0, 1.0 / 6.0};
     particles *p = &s->p;
     size_t n = p->n_fluid;
-    double dt = time_step(s);
-    if (s->t + dt > t_stop) dt = t_stop - s->t;
-    s->dt = dt;
-    if (build_neighbours(s, dt)) return -1;
-
+    double dt = s->dt;
     double *y[RK_VARS], *rate[RK_VARS];
     rk_arrays(s, y, rate);
     for (int v = 0; v < RK_VARS; v++) memcpy(s->y0[v], y[v], n * sizeof(double));
@@ -125,14 +131,12 @@ int solver_step(solver *s, double t_stop)
     for (int stage = 0; stage < 4; stage++) {
         double ts = s->t + stage_c[stage] * dt, c = stage_c[stage] * dt;
         vec g_eff = solver_g_eff(s, ts);
-        if (stage > 0) { /* stage 0 is the state build_neighbours has just prepared */
+        if (stage > 0) { /* stage 0 is the state solver_prepare has set up */
 #pragma omp parallel for schedule(static)
             for (size_t i = 0; i < n; i++)
                 for (int v = 0; v < RK_VARS; v++) y[v][i] = s->y0[v][i] + c * rate[v][i];
             solver_update_eos(s);
             tank_refresh_ghosts(&s->tank, p, g_eff, s->pp.rho0, s->pp.c0);
-        } else {
-            fields_compute(&s->pp, &s->tank, p, &s->nl, g_eff);
         }
         rhs_compute(&s->pp, p, &s->nl, g_eff, &s->k);
         if (stage == 0) s->max_acc = max_acceleration(s);
@@ -151,7 +155,14 @@ int solver_step(solver *s, double t_stop)
     /* land exactly on t_stop when the step was cut to reach it */
     s->t = s->t + dt >= t_stop ? t_stop : s->t + dt;
     s->step++;
+    s->last_dt = dt;
     tank_bounce_back(&s->tank, p, s->dv.dr);
     solver_update_eos(s);
+}
+
+int solver_step(solver *s, double t_stop)
+{
+    if (solver_prepare(s, t_stop)) return -1;
+    solver_advance(s, t_stop);
     return 0;
 }

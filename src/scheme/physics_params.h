@@ -15,6 +15,7 @@ typedef struct {
     double delta_cap;          /* upper bound of delta_ij: delta l c0 = 0.1 l c0 (sec. 2.2) */
     double nu_t_cap;           /* upper bound of mu^T_ij / rho0: 0.1 l c0 / K (sec. 2.2) */
     double lambda_renormalize; /* use L^-1 in gradients only when lambda exceeds this */
+    double normal_reference;   /* |L^-1 sum grad W V| on a flat lattice surface (theory §4) */
     bool les;                  /* Smagorinsky eddy viscosity */
     bool van_driest;           /* damp it near no-slip walls */
 } physics_params;

@@ -1,5 +1,6 @@
 /* solver: set-up and the neighbour structures of a step. */
 #include "scheme/solver.h"
+#include "diag/freesurface.h"
 #include "physics/eos.h"
 #include "physics/viscosity.h"
 #include "scheme/models.h"
@@ -23,6 +24,7 @@ static void physics_setup(solver *s)
     pp->delta_cap = 0.1 * pp->filter_length * pp->c0;                    /* sec. 2.2 */
     pp->nu_t_cap = 0.1 * pp->filter_length * pp->c0 / (2.0 * (DIM + 2)); /* sec. 2.2 */
     pp->lambda_renormalize = 0.2; /* theory §2 (guessed there; kept) */
+    pp->normal_reference = freesurface_reference_normal(&pp->k, pp->dr);
     pp->les = cfg->les;
     pp->van_driest = cfg->les && cfg->wall == WALL_NO_SLIP;
 }

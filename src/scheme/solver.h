@@ -32,7 +32,8 @@ typedef struct {
     double *scratch;      /* n_fluid doubles */
     size_t *order;        /* n_fluid sort permutation */
 
-    double t, dt;
+    double t, dt;   /* time; size of the prepared step */
+    double last_dt; /* size of the step that ended at t */
     long step;
     double max_acc;          /* largest |du/dt| of the last step (dt_a of Eq. 8) */
     double skin;             /* neighbour-list margin of this step */
@@ -43,6 +44,8 @@ typedef struct {
 #define solver_init       DIM_NAME(solver_init)
 #define solver_free       DIM_NAME(solver_free)
 #define solver_step       DIM_NAME(solver_step)
+#define solver_prepare    DIM_NAME(solver_prepare)
+#define solver_advance    DIM_NAME(solver_advance)
 #define solver_g_eff      DIM_NAME(solver_g_eff)
 #define solver_update_eos DIM_NAME(solver_update_eos)
 #define lattice_fill      DIM_NAME(lattice_fill)
@@ -51,14 +54,21 @@ typedef struct {
  * Returns 0, or 2 with a message. */
 int solver_init(solver *s, const config *cfg, char *err, size_t err_len);
 void solver_free(solver *s);
-/* Advances one time step of size min(Eq. (8), t_stop - t). Returns 0, or -1 out of memory. */
+/* Sets up the step from the current state: its size min(Eq. (8), t_stop - t), the fluid
+ * sorted by cell, ghosts, neighbour lists and the per-step fields (geometry, free surface,
+ * diffusion), which also serve the diagnostics of the state at time t. Returns 0, or -1 when
+ * out of memory. */
+int solver_prepare(solver *s, double t_stop);
+/* The prepared step: four RK4 stages, then bounce-back. */
+void solver_advance(solver *s, double t_stop);
+/* solver_prepare, then solver_advance. */
 int solver_step(solver *s, double t_stop);
 /* g_eff = g - a_tank(t) (theory §6) */
 vec solver_g_eff(const solver *s, double t);
 /* p and V = m/rho of the fluid from rho, m (the linear EOS). */
 void solver_update_eos(solver *s);
 
-/* Fills the fluid part of p: positions (i + 1/2) dr in the liquid box, p = rho0 |g| (H - y),
+/* Fills the fluid part of p: positions (i + 1/2) spacing in the liquid box, p = rho0 |g| (H - y),
  * rho from the EOS, m = rho dr^n, ids 0.. in lattice order. */
 int lattice_fill(particles *p, const config *cfg, const derived *dv);
 

@@ -1,0 +1,31 @@
+/* freesurface: free-surface particles (Marrone et al. 2010, theory §4) and the region S_F
+ * near them (Eq. 9, Fig. 1), from the per-step geometry (lambda, normal). */
+#ifndef VCSPH_FREESURFACE_H
+#define VCSPH_FREESURFACE_H
+
+#include "core/cells.h"
+#include "core/kernel.h"
+#include "core/particles.h"
+
+enum { SURFACE_INTERIOR = 0, SURFACE_REGION = 1, SURFACE_FREE = 2 };
+
+#define FREESURFACE_LAMBDA_FREE     0.2  /* lambda <= this: free surface (theory §4) */
+#define FREESURFACE_LAMBDA_INTERIOR 0.75 /* lambda > this: interior */
+/* Scan radius of the umbrella test in units of dr: Marrone et al. used the kernel's h at
+ * h/dr = 1.33. vcsph keeps that size in dr rather than the kernel h (2 dr here): a smaller
+ * umbrella tolerates a rougher surface (a surface particle 0.27 dr below its neighbours is
+ * already "covered" with a 2 dr umbrella, 0.45 dr with 1.33 dr). */
+#define FREESURFACE_SCAN_OVER_DR 1.33
+
+#define freesurface_detect           DIM_NAME(freesurface_detect)
+#define freesurface_reference_normal DIM_NAME(freesurface_reference_normal)
+
+/* |L^-1 sum grad W V| of a particle on the flat surface of a lattice half-space: the typical
+ * surface value of the unnormalised normal. */
+double freesurface_reference_normal(const kernel *k, double dr);
+
+/* Fills p->surface of the fluid: needs lambda, normal and normal_raw of this step. */
+void freesurface_detect(const kernel *k, double dr, double normal_reference, particles *p,
+                        const neighbour_list *nl);
+
+#endif

@@ -1,0 +1,27 @@
+/* volume: run-time volume errors from the particle positions (sec. 3, appendix):
+ * eps_V^(1) (Eq. 12), eps_V^(2) (A.2), eps_V^(3) (A.3) and the local eps_Vi. */
+#ifndef VCSPH_VOLUME_H
+#define VCSPH_VOLUME_H
+
+#include "core/particles.h"
+
+typedef struct {
+    double eps_v1, eps_v2, eps_v3;
+    long n_free_surface;
+} volume_errors;
+
+#define volume_compute DIM_NAME(volume_compute)
+
+/* From this step's geometry (kernel_sum, gamma, lambda, surface); `cell_volume` is dr^n and
+ * V0 = n_fluid dr^n. `scratch` holds n_fluid doubles. Sums in the fixed order of reduce. */
+void volume_compute(const particles *p, double cell_volume, double *scratch, volume_errors *out);
+
+/* Local error eps_Vi = Vgeo_i / dr^n - 1, Vgeo_i = 1 / sum_j W_ij off S_F and dr^n on S_F
+ * (theory §9). */
+static inline double volume_local_error(const particles *p, size_t i, double cell_volume)
+{
+    if (p->surface[i] != 0) return 0.0;
+    return 1.0 / (p->kernel_sum[i] * cell_volume) - 1.0;
+}
+
+#endif
