@@ -21,6 +21,10 @@ static int check_case(const config *cfg)
     derived dv;
     derived_compute(cfg, &mo, &dv);
     motion_free(&mo);
+    if (derived_check(cfg, &dv, err, sizeof err)) {
+        fprintf(stderr, "vcsph: %s\n", err);
+        return RUN_BAD_INPUT;
+    }
     printf("%s: valid\n", cfg->name);
     derived_print(cfg, &dv, stdout);
     return RUN_OK;

@@ -54,6 +54,16 @@ void derived_compute(const config *cfg, const motion *mo, derived *dv)
     dv->d_power = periodic ? dv->d_energy / cfg->period : 0.0;
 }
 
+int derived_check(const config *cfg, const derived *dv, char *err, size_t err_len)
+{
+    if (dv->c0 > 0.0) return 0;
+    snprintf(err, err_len,
+             "numerics.sound_speed = auto: 10 sqrt(2 g_max H) is 0 without gravity or tank "
+             "motion; give a sound speed > 0 (m/s; Eq. 6: at least 10 times the largest speed)");
+    (void)cfg;
+    return 2;
+}
+
 void derived_print(const config *cfg, const derived *dv, FILE *out)
 {
     const char *per = cfg->dim == 2 ? " (per unit width)" : "";

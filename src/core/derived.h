@@ -24,6 +24,9 @@ typedef struct {
 } derived;
 
 void derived_compute(const config *cfg, const motion *mo, derived *out);
+/* Whether the derived numbers make a runnable case (a sound speed > 0: `auto` needs gravity
+ * or motion). Returns 0, or 2 with a message naming the key. */
+int derived_check(const config *cfg, const derived *dv, char *err, size_t err_len);
 /* Prints the derived numbers, one per line, for `vcsph check`. */
 void derived_print(const config *cfg, const derived *dv, FILE *out);
 

@@ -58,6 +58,10 @@ int solver_init(solver *s, const config *cfg, char *err, size_t err_len)
     int status = motion_init(&s->mo, cfg, err, err_len);
     if (status) return status;
     derived_compute(cfg, &s->mo, &s->dv);
+    if ((status = derived_check(cfg, &s->dv, err, err_len))) {
+        motion_free(&s->mo);
+        return status;
+    }
     double size[3] = {cfg->tank_length, cfg->tank_height, cfg->tank_width};
     for (int d = 0; d < DIM; d++) s->tank.size[d] = size[d];
     s->tank.wall = cfg->wall;
