@@ -8,10 +8,12 @@ void cli_usage(FILE *out)
 {
     fputs("usage: vcsph run CASE [--set section.key=value]... [-o DIR] [--quiet]\n"
           "       vcsph check CASE [--set section.key=value]...\n"
+          "       vcsph volume SNAPSHOT...\n"
           "       vcsph --help | --version\n"
           "\n"
           "  run     run the case; outputs go to output.dir of the case (default out/<name>)\n"
           "  check   validate the case and print the derived numbers; runs nothing\n"
+          "  volume  print t, eps_v1 (Eq. 12) and eps_gm (Eq. 15) of saved snapshots (CSV)\n"
           "  --set   override any key of the case file (repeatable)\n"
           "  -o DIR  output directory\n"
           "  --quiet no terminal output (log.txt is still written)\n"
@@ -52,12 +54,21 @@ int cli_parse(int argc, char **argv, cli_args *args, char *err, int err_len)
         args->command = CLI_VERSION;
         return 0;
     }
+    if (!strcmp(cmd, "volume")) {
+        args->command = CLI_VOLUME;
+        args->snapshots = argv + 2;
+        args->n_snapshots = argc - 2;
+        if (args->n_snapshots > 0) return 0;
+        snprintf(err, (size_t)err_len, "vcsph volume: give one or more snapshot files");
+        return 2;
+    }
     if (!strcmp(cmd, "run"))
         args->command = CLI_RUN;
     else if (!strcmp(cmd, "check"))
         args->command = CLI_CHECK;
     else {
-        snprintf(err, (size_t)err_len, "vcsph: unknown command '%s' (allowed: run, check)", cmd);
+        snprintf(err, (size_t)err_len, "vcsph: unknown command '%s' (allowed: run, check, volume)",
+                 cmd);
         return 2;
     }
     for (int k = 2; k < argc; k++) {

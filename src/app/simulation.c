@@ -66,6 +66,16 @@ static void event(run *r, const char *what, const char *detail)
     csv_end_row(&r->events);
 }
 
+/* The graphical method, Eq. (15): eps_GM of the current positions (sec. 3.2). */
+static int graphical_error(solver *s, double *eps_gm)
+{
+    char err[256];
+    if (volume_graphical(&s->p, s->tank.size, s->dv.dr, s->dv.v0, eps_gm, err, sizeof err) == 0)
+        return 0;
+    log_error("vcsph: graphical method: %s", err);
+    return -1;
+}
+
 /* One row of timeseries.csv (design §4). The volume columns need this step's geometry
  * (solver_prepare at the current state); a breakdown row has none and leaves them empty. */
 static void write_series_row(run *r, int with_geometry)
@@ -89,7 +99,11 @@ static void write_series_row(run *r, int with_geometry)
     } else {
         for (int k = 0; k < 3; k++) csv_put_empty(c);
     }
-    csv_put_empty(c); /* eps_gm: output.graphical */
+    double eps_gm;
+    if (with_geometry && r->cfg->graphical && graphical_error(s, &eps_gm) == 0)
+        csv_put(c, eps_gm);
+    else
+        csv_put_empty(c);
     csv_put(c, dg.vol_sph / r->v0 - 1.0);
     csv_put(c, dg.mass / r->mass0 - 1.0);
     csv_put(c, 0.0);    /* eta */

@@ -18,6 +18,13 @@ enum { RUN_OK = 0, RUN_FAILED = 1, RUN_BAD_INPUT = 2, RUN_BREAKDOWN = 3 };
 int simulation_run_2d(const config *cfg, const run_options *opt);
 int simulation_run_3d(const config *cfg, const run_options *opt);
 
+struct snapshot_info;
+/* `vcsph volume`: eps_v1 and eps_gm of one snapshot file whose case is cfg. */
+int snapshot_volume_2d(const config *cfg, const char *path, const struct snapshot_info *info,
+                       double *eps_v1, double *eps_gm, char *err, size_t err_len);
+int snapshot_volume_3d(const config *cfg, const char *path, const struct snapshot_info *info,
+                       double *eps_v1, double *eps_gm, char *err, size_t err_len);
+
 static inline int simulation_run(const config *cfg, const run_options *opt)
 {
     return cfg->dim == 3 ? simulation_run_3d(cfg, opt) : simulation_run_2d(cfg, opt);

@@ -2,6 +2,7 @@
 #include "diag/volume.h"
 #include "core/reduce.h"
 #include "diag/freesurface.h"
+#include "diag/raster.h"
 
 typedef enum { MEASURE_KERNEL, MEASURE_GAMMA, MEASURE_LAMBDA } measure;
 
@@ -34,4 +35,18 @@ void volume_compute(const particles *p, double cell_volume, double *scratch, vol
 #pragma omp parallel for schedule(static) reduction(+ : n)
     for (size_t i = 0; i < p->n_fluid; i++) n += p->surface[i] == SURFACE_FREE;
     out->n_free_surface = n;
+}
+
+int volume_graphical(const particles *p, const double size[DIM], double dr, double v0,
+                     double *eps_gm, char *err, size_t err_len)
+{
+    raster_params rp = raster_params_default(DIM);
+    double *x[3] = {NULL, NULL, NULL}, box[3] = {0.0, 0.0, 0.0}, volume;
+    for (int d = 0; d < DIM; d++) {
+        x[d] = p->x[d];
+        box[d] = size[d];
+    }
+    if (raster_volume(DIM, p->n_fluid, x, dr, box, &rp, &volume, err, err_len)) return -1;
+    *eps_gm = volume / v0 - 1.0;
+    return 0;
 }

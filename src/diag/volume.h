@@ -16,6 +16,14 @@ typedef struct {
  * V0 = n_fluid dr^n. `scratch` holds n_fluid doubles. Sums in the fixed order of reduce. */
 void volume_compute(const particles *p, double cell_volume, double *scratch, volume_errors *out);
 
+#define volume_graphical DIM_NAME(volume_graphical)
+
+/* eps_GM = covered volume / V0 - 1 of the graphical method, Eq. (15), over the tank box
+ * [0, size]: the rule of raster_params_default (docs/graphical-method.md). Returns 0, or -1
+ * with a message. */
+int volume_graphical(const particles *p, const double size[DIM], double dr, double v0,
+                     double *eps_gm, char *err, size_t err_len);
+
 /* Local error eps_Vi = Vgeo_i / dr^n - 1, Vgeo_i = 1 / sum_j W_ij off S_F and dr^n on S_F
  * (theory §9). */
 static inline double volume_local_error(const particles *p, size_t i, double cell_volume)

@@ -1,0 +1,30 @@
+/* raster: the graphical method of the paper, Eq. (15) (sec. 3.2; theory §9): the particles
+ * drawn as discs (balls) on a grid of pixels (voxels) of side dr / k, the covered pixels
+ * counted. Dimension-free at run time (dim = 2 or 3); docs/graphical-method.md has the
+ * rules compared and the figures behind the defaults. */
+#ifndef VCSPH_RASTER_H
+#define VCSPH_RASTER_H
+
+#include <stddef.h>
+
+typedef struct {
+    int k;          /* pixels per particle spacing: pixel side dr / k (theory §9: k >= 4) */
+    double radius;  /* disc (ball) radius / dr */
+    double closing; /* radius of the morphological closing / dr; 0: none (a plain disc rule) */
+} raster_params;
+
+/* The chosen rule: discs of radius dr/2 (a lattice cell's own extent, nothing spills past a
+ * free surface), closed with a disc of radius c = 2 dr; k = 8 in 2D, 4 in 3D
+ * (docs/graphical-method.md). */
+raster_params raster_params_default(int dim);
+
+/* Covered volume (m^n; m^2 per unit width in 2D) of the n particles at positions
+ * x[0..dim)[0..n), rasterised over the tank box [0, size[d]] (walls at 0 and size[d]); the
+ * pixels are sized to fit the box exactly, side dr / k or a hair less. The walls act as
+ * mirrors, as the ghost particles do (theory §5). eps_GM = volume / (n dr^dim) - 1 (Eq. 15).
+ * The result does not depend on the number of threads. Returns 0, or -1 with a message in err
+ * (bad argument, grid too large, out of memory). */
+int raster_volume(int dim, size_t n, double *const x[3], double dr, const double size[3],
+                  const raster_params *rp, double *volume, char *err, size_t err_len);
+
+#endif

@@ -1,0 +1,617 @@
+/* Tests of the graphical method, Eq. (15) (sec. 3.2; theory §9): the closing against a
+ * brute-force one, lattice blocks at rest read eps_GM = 0, a disc (ball) of lattice particles
+ * and a compressed block read their volume, separated blobs are not bridged, and the count
+ * does not depend on the thread count.
+ *
+ * VCSPH_RASTER_TABLE in the environment also prints the figures of docs/graphical-method.md:
+ * letters for the tables (b lattice block, d lattice disc/ball, s smooth disc/ball, r rotated
+ * block, p perturbed block, c compressed block, g gaps between blobs, t timings) and digits
+ * for the dimensions, e.g. VCSPH_RASTER_TABLE=bdt23. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include <cmocka.h>
+
+#include <math.h>
+#include <omp.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "diag/raster.h"
+
+#include "check.h"
+
+#define PI 3.14159265358979323846
+
+static const double dr = 0.01;
+
+/* ---- particle sets ------------------------------------------------------------------------- */
+
+typedef struct {
+    size_t n, cap;
+    double *x[3];
+} cloud;
+
+static void cloud_init(cloud *c)
+{
+    c->n = 0;
+    c->cap = 1024;
+    for (int d = 0; d < 3; d++) {
+        c->x[d] = malloc(c->cap * sizeof(double));
+        assert_non_null(c->x[d]);
+    }
+}
+
+static void cloud_free(cloud *c)
+{
+    for (int d = 0; d < 3; d++) free(c->x[d]);
+}
+
+static void cloud_add(cloud *c, double x, double y, double z)
+{
+    if (c->n == c->cap) {
+        c->cap *= 2;
+        for (int d = 0; d < 3; d++) {
+            c->x[d] = realloc(c->x[d], c->cap * sizeof(double));
+            assert_non_null(c->x[d]);
+        }
+    }
+    c->x[0][c->n] = x;
+    c->x[1][c->n] = y;
+    c->x[2][c->n] = z;
+    c->n++;
+}
+
+/* n[0] x n[1] (x n[2]) particles of spacing s, the first at o + s/2: the lattice of sec. 2.1
+ * when o = 0 and s = dr. */
+static void add_block(cloud *c, int dim, const int n[3], double s, const double o[3])
+{
+    for (int k = 0; k < (dim == 3 ? n[2] : 1); k++)
+        for (int j = 0; j < n[1]; j++)
+            for (int i = 0; i < n[0]; i++)
+                cloud_add(c, o[0] + (i + 0.5) * s, o[1] + (j + 0.5) * s,
+                          dim == 3 ? o[2] + (k + 0.5) * s : 0.0);
+}
+
+/* uniform in [-1, 1), a fixed sequence (64-bit LCG, Knuth's MMIX constants) */
+static double noise(uint64_t *state)
+{
+    *state = *state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return (double)(*state >> 11) / 4503599627370496.0 - 1.0;
+}
+
+static double gm_volume(int dim, const cloud *c, const double size[3], const raster_params *rp)
+{
+    char err[256];
+    double v = -1.0;
+    int rc = raster_volume(dim, c->n, c->x, dr, size, rp, &v, err, sizeof err);
+    if (rc) fail_msg("raster_volume: %s", err);
+    return v;
+}
+
+static double eps_gm(int dim, const cloud *c, const double size[3], const raster_params *rp)
+{
+    return gm_volume(dim, c, size, rp) / ((double)c->n * pow(dr, dim)) - 1.0;
+}
+
+/* The initial lattice of sec. 2.1: N rows filling the bottom of the tank wall to wall,
+ * 2N x N particles in 2D, N x N x N in 3D, free surface on top, 8 dr below the lid; particles
+ * displaced by up to a dr along each axis (uniformly) when a > 0. */
+static double lattice_block_eps(int dim, int N, double a, uint64_t seed, const raster_params *rp)
+{
+    cloud c;
+    cloud_init(&c);
+    int n[3] = {dim == 3 ? N : 2 * N, N, N};
+    double size[3] = {n[0] * dr, (N + 8) * dr, n[2] * dr};
+    add_block(&c, dim, n, dr, (double[3]){0.0, 0.0, 0.0});
+    for (size_t i = 0; a > 0.0 && i < c.n; i++)
+        for (int d = 0; d < dim; d++)
+            c.x[d][i] = fmin(fmax(c.x[d][i] + a * dr * noise(&seed), 0.0), size[d]);
+    double e = eps_gm(dim, &c, size, rp);
+    cloud_free(&c);
+    return e;
+}
+
+/* All the lattice points within R of a lattice point in the middle of a tank 4 (R + 5 dr)
+ * wide, farther than 2c from the walls. */
+static void add_lattice_disc(cloud *c, int dim, int R_dr, double size[3])
+{
+    int m = R_dr + 5;
+    for (int d = 0; d < 3; d++) size[d] = 4 * m * dr;
+    double o = (2 * m + 0.5) * dr;
+    for (int k = (dim == 3 ? -m : 0); k <= (dim == 3 ? m : 0); k++)
+        for (int j = -m; j <= m; j++)
+            for (int i = -m; i <= m; i++)
+                if (i * i + j * j + k * k <= R_dr * R_dr)
+                    cloud_add(c, o + i * dr, o + j * dr, dim == 3 ? o + k * dr : 0.0);
+}
+
+static double lattice_disc_eps(int dim, int R_dr, const raster_params *rp)
+{
+    cloud c;
+    cloud_init(&c);
+    double size[3];
+    add_lattice_disc(&c, dim, R_dr, size);
+    double e = eps_gm(dim, &c, size, rp);
+    cloud_free(&c);
+    return e;
+}
+
+/* ---- the closing against a brute-force one ------------------------------------------------ */
+
+static int reflect(int j, int n)
+{
+    int period = 2 * n, t = ((j % period) + period) % period;
+    return t < n ? t : period - 1 - t;
+}
+
+/* The closing of raster.c written the slow way: every pixel visits every pixel within c + h/2
+ * (the walls reflect), on a box that is a whole number of pixels wide. Returns the count. */
+static size_t brute_force_count(int dim, const cloud *c, const int nn[3], const raster_params *rp)
+{
+    double h = dr / rp->k, r = rp->radius * dr;
+    double cp = rp->closing * rp->k + 0.5, c2 = cp * cp;
+    int reach = (int)cp;
+    size_t total = (size_t)nn[0] * nn[1] * nn[2];
+    unsigned char *fluid = calloc(total, 1), *dilated = calloc(total, 1);
+    assert_non_null(fluid);
+    assert_non_null(dilated);
+    for (size_t p = 0; p < total; p++) {
+        int q[3] = {(int)(p % nn[0]), (int)(p / nn[0] % nn[1]), (int)(p / nn[0] / nn[1])};
+        for (size_t i = 0; i < c->n && !fluid[p]; i++) {
+            double d2 = 0.0;
+            for (int d = 0; d < dim; d++) {
+                double dx = (q[d] + 0.5) * h - c->x[d][i];
+                d2 += dx * dx;
+            }
+            fluid[p] = d2 <= r * r;
+        }
+    }
+    /* pass 0: dilation of `fluid` into `dilated`; pass 1: what keeps away from its complement */
+    size_t count = 0;
+    for (int pass = 0; pass < 2; pass++)
+        for (size_t p = 0; p < total; p++) {
+            int q[3] = {(int)(p % nn[0]), (int)(p / nn[0] % nn[1]), (int)(p / nn[0] / nn[1])};
+            int hit = 0;
+            for (int dz = (dim == 3 ? -reach : 0); dz <= (dim == 3 ? reach : 0) && !hit; dz++)
+                for (int dy = -reach; dy <= reach && !hit; dy++)
+                    for (int dx = -reach; dx <= reach && !hit; dx++) {
+                        if ((double)(dx * dx + dy * dy + dz * dz) > c2) continue;
+                        size_t o = (size_t)reflect(q[0] + dx, nn[0]) +
+                                   (size_t)nn[0] * ((size_t)reflect(q[1] + dy, nn[1]) +
+                                                    (size_t)nn[1] * reflect(q[2] + dz, nn[2]));
+                        hit = pass == 0 ? fluid[o] : !dilated[o];
+                    }
+            if (pass == 0)
+                dilated[p] = (unsigned char)hit;
+            else
+                count += !hit;
+        }
+    free(fluid);
+    free(dilated);
+    return count;
+}
+
+/* The distance transforms, thresholds and mirror walls do what their definition says: the
+ * same pixels as the brute force, exactly (random particles, some touching the walls). */
+static void test_closing_matches_brute_force(void **state)
+{
+    (void)state;
+    for (int dim = 2; dim <= 3; dim++) {
+        raster_params rp = {.k = 4, .radius = 0.5, .closing = dim == 3 ? 1.0 : 1.5};
+        int cells[3] = {dim == 3 ? 7 : 12, dim == 3 ? 6 : 9, dim == 3 ? 5 : 1};
+        int nn[3] = {cells[0] * rp.k, cells[1] * rp.k, dim == 3 ? cells[2] * rp.k : 1};
+        double size[3] = {cells[0] * dr, cells[1] * dr, cells[2] * dr};
+        cloud c;
+        cloud_init(&c);
+        uint64_t seed = 7;
+        for (int i = 0; i < (dim == 3 ? 60 : 40); i++) {
+            double p[3];
+            for (int d = 0; d < 3; d++) p[d] = (0.5 + 0.5 * noise(&seed)) * size[d];
+            cloud_add(&c, p[0], p[1], p[2]);
+        }
+        double h3 = pow(dr / rp.k, dim);
+        double want = (double)brute_force_count(dim, &c, nn, &rp) * h3;
+        double got = gm_volume(dim, &c, size, &rp);
+        printf("%dD closing: %.0f pixels, brute force %.0f\n", dim, got / h3, want / h3);
+        assert_close(got / h3, want / h3, 0.0);
+        cloud_free(&c);
+    }
+}
+
+/* ---- lattice at rest ---------------------------------------------------------------------- */
+
+/* theory §9: the initial lattice reads eps_GM = 0 within 0.2 %; also the coarser and finer
+ * pixels (k = 4, 8 in both dimensions) */
+static void test_lattice_block(void **state)
+{
+    (void)state;
+    for (int dim = 2; dim <= 3; dim++)
+        for (int k = 4; k <= 8; k += 4) {
+            raster_params rp = raster_params_default(dim);
+            rp.k = k;
+            double e = lattice_block_eps(dim, 20, 0.0, 0, &rp);
+            printf("lattice block %dD, N = 20, k = %d, c = %g dr: eps_GM = %+.4f %%\n", dim, k,
+                   rp.closing, 100.0 * e);
+            assert_close(e, 0.0, 2e-3);
+        }
+}
+
+/* ---- a disc (ball) of lattice particles --------------------------------------------------- */
+
+/* The issue asks for the volume of a disc (ball) of lattice particles, R = 10 dr, within
+ * 0.5 %. The chosen rule does not meet it: it reads +1.6 % (2D), +1.7 % (3D). A lattice cut
+ * by a circle has a staircase for a surface; the closing lays its surface dr/2 beyond the
+ * outermost particles, over the steps, where the N cells of the particles fill the steps only
+ * half on average (docs/graphical-method.md). What holds whatever the shape is checked here
+ * instead: the closing contains the discs and lies within their dilation by c + h/2 (by its
+ * definition), and the figure is printed. */
+static void test_lattice_disc(void **state)
+{
+    (void)state;
+    for (int dim = 2; dim <= 3; dim++) {
+        raster_params rp = raster_params_default(dim);
+        raster_params discs = rp, dilated = rp;
+        discs.closing = dilated.closing = 0.0;
+        dilated.radius = rp.radius + rp.closing + 0.5 / rp.k; /* c + h/2, as in raster.c */
+        double e = lattice_disc_eps(dim, 10, &rp);
+        double lo = lattice_disc_eps(dim, 10, &discs), hi = lattice_disc_eps(dim, 10, &dilated);
+        printf("lattice %s %dD, R = 10 dr: eps_GM = %+.3f %% (discs alone %+.3f %%, dilated "
+               "%+.3f %%; the issue asks for 0.5 %%)\n",
+               dim == 3 ? "ball" : "disc", dim, 100.0 * e, 100.0 * lo, 100.0 * hi);
+        assert_true(e >= lo && e <= hi);
+    }
+}
+
+/* ---- uniform compression ------------------------------------------------------------------ */
+
+/* A block of spacing dr (1 - e), e = 1 %, in a tank shrunk with it: eps_GM must read
+ * (1 - e)^n - 1 within 0.3 % of V0 (the issue's figure). The walls fit the grid and read
+ * exactly; the free surface does not, and its error is shared by the N rows below it: half a
+ * pixel of quantization, h/2 / (N dr) = 1 / (2 k N); the valleys (pits in 3D) the closing
+ * leaves between the particles of a surface, up to about 0.05 dr (2D) and 0.08 dr (3D) on
+ * average at c = 2 dr (docs/graphical-method.md); and the discs of radius dr/2 on particles
+ * dr (1 - e) apart reaching e dr/2 beyond the compressed cells, e / 2N. A tall block (N = 80
+ * rows, 10 columns wide) keeps the sum under 0.3 %: 2D, k = 8: 0.08 + 0.06 + 0.006 %; 3D,
+ * k = 4: 0.16 + 0.10 + 0.006 %. */
+static void test_compressed_block(void **state)
+{
+    (void)state;
+    const double e = 0.01;
+    for (int dim = 2; dim <= 3; dim++) {
+        raster_params rp = raster_params_default(dim);
+        cloud c;
+        cloud_init(&c);
+        int n[3] = {10, 80, 10};
+        double s = dr * (1.0 - e);
+        double size[3] = {n[0] * s, (n[1] + 8) * dr, n[2] * s};
+        add_block(&c, dim, n, s, (double[3]){0.0, 0.0, 0.0});
+        double got = eps_gm(dim, &c, size, &rp), want = pow(1.0 - e, dim) - 1.0;
+        printf("compressed block %dD, e = 1 %%: eps_GM = %+.4f %%, (1-e)^n - 1 = %+.4f %%\n", dim,
+               100.0 * got, 100.0 * want);
+        assert_close(got, want, 3e-3);
+        cloud_free(&c);
+    }
+}
+
+/* ---- separated blobs ---------------------------------------------------------------------- */
+
+/* Two blocks of 8 x 8 (x 8) lattice particles side by side along x, the facing rows of
+ * particles gap + dr apart (so that their discs are `gap` apart), in the middle of a tank. */
+static double two_blocks_volume(int dim, double gap, int blocks, const raster_params *rp)
+{
+    cloud c;
+    cloud_init(&c);
+    int n[3] = {8, 8, 8};
+    double margin = 4.0 * rp->closing * dr + 2.0 * dr;
+    double size[3] = {16 * dr + gap + 2 * margin, 8 * dr + 2 * margin, 8 * dr + 2 * margin};
+    add_block(&c, dim, n, dr, (double[3]){margin, margin, margin});
+    if (blocks == 2) add_block(&c, dim, n, dr, (double[3]){margin + 8 * dr + gap, margin, margin});
+    double v = gm_volume(dim, &c, size, rp);
+    cloud_free(&c);
+    return v;
+}
+
+/* Two blobs whose discs are farther apart than 2c are not bridged: the pair reads twice the
+ * volume of one, to the pixel (the gap is a whole number of pixels, so both blobs sit on the
+ * grid alike). Closer, the closing bridges them: printed. */
+static void test_blobs_not_bridged(void **state)
+{
+    (void)state;
+    for (int dim = 2; dim <= 3; dim++) {
+        raster_params rp = raster_params_default(dim);
+        double h = dr / rp.k, c = rp.closing * dr;
+        double one = two_blocks_volume(dim, 2.0 * c + h, 1, &rp);
+        double two = two_blocks_volume(dim, 2.0 * c + h, 2, &rp);
+        double pixel = pow(h, dim);
+        assert_close(two / pixel, 2.0 * one / pixel, 1e-6);
+        printf("two blobs %dD, gap 2c + h: %.6g = 2 x %.6g; closer, bridge / one blob:", dim, two,
+               one);
+        for (double g = 2.0 * c; g > 0.0; g -= 0.5 * c) {
+            double v = two_blocks_volume(dim, g, 2, &rp);
+            printf(" %.2g c: %+.2f %%", g / c, 100.0 * (v - 2.0 * one) / one);
+            if (g == 2.0 * c) assert_true(v > 2.0 * one);
+        }
+        printf("\n");
+    }
+}
+
+/* ---- threads ------------------------------------------------------------------------------ */
+
+/* Every pixel is written by one thread and the count is an integer: the volume must be the
+ * same double with 1 and 2 threads (a disordered block, a box that is no whole number of
+ * pixels). */
+static void test_thread_count(void **state)
+{
+    (void)state;
+    int threads = omp_get_max_threads();
+    for (int dim = 2; dim <= 3; dim++) {
+        raster_params rp = raster_params_default(dim);
+        cloud c;
+        cloud_init(&c);
+        int n[3] = {dim == 3 ? 16 : 40, 16, 16};
+        double size[3] = {(n[0] + 0.37) * dr, 24.13 * dr, (n[2] + 0.71) * dr};
+        add_block(&c, dim, n, dr, (double[3]){0.0, 0.0, 0.0});
+        uint64_t seed = 11;
+        for (size_t i = 0; i < c.n; i++)
+            for (int d = 0; d < dim; d++) c.x[d][i] += 0.2 * dr * noise(&seed);
+        omp_set_num_threads(1);
+        double v1 = gm_volume(dim, &c, size, &rp);
+        omp_set_num_threads(2);
+        double v2 = gm_volume(dim, &c, size, &rp);
+        omp_set_num_threads(threads);
+        printf("%dD: 1 thread %.17g, 2 threads %.17g\n", dim, v1, v2);
+        assert_true(v1 == v2);
+        cloud_free(&c);
+    }
+}
+
+/* ---- bad input ---------------------------------------------------------------------------- */
+
+static void test_bad_input(void **state)
+{
+    (void)state;
+    double x0[1] = {0.5 * dr}, x1[1] = {NAN}, x2[1] = {0.0};
+    double *x[3] = {x0, x1, x2};
+    double size[3] = {dr, dr, dr}, v = 0.0;
+    char err[256];
+    raster_params rp = raster_params_default(2);
+    assert_int_equal(raster_volume(2, 1, x, dr, size, &rp, &v, err, sizeof err), -1);
+    assert_non_null(strstr(err, "not finite"));
+    x1[0] = 0.5 * dr;
+    assert_int_equal(raster_volume(4, 1, x, dr, size, &rp, &v, err, sizeof err), -1);
+    assert_int_equal(raster_volume(2, 1, x, 0.0, size, &rp, &v, err, sizeof err), -1);
+    rp.k = 0;
+    assert_int_equal(raster_volume(2, 1, x, dr, size, &rp, &v, err, sizeof err), -1);
+    rp = raster_params_default(2);
+    assert_int_equal(raster_volume(2, 0, x, dr, size, &rp, &v, err, sizeof err), 0);
+    assert_close(v, 0.0, 0.0);
+}
+
+/* ---- tables for docs/graphical-method.md -------------------------------------------------- */
+
+typedef struct {
+    const char *name;
+    double radius, closing;
+} rule;
+
+static const rule rules[] = {
+    {"disc dr/sqrt(2)", 0.70710678118654752, 0.0},
+    {"disc dr/sqrt(pi)", 0.56418958354775628, 0.0},
+    {"ball dr sqrt(3)/2", 0.86602540378443865, 0.0},
+    {"ball dr (3/(4 pi))^(1/3)", 0.62035049089940001, 0.0},
+    {"dr/2, closing 0.5 dr", 0.5, 0.5},
+    {"dr/2, closing 1 dr", 0.5, 1.0},
+    {"dr/2, closing 1.5 dr", 0.5, 1.5},
+    {"dr/2, closing 2 dr", 0.5, 2.0},
+    {"dr/2, closing 3 dr", 0.5, 3.0},
+};
+#define N_RULES (sizeof rules / sizeof rules[0])
+
+/* A disc of concentric rings 1, 2, .. R dr in radius, round(2 pi j) particles on ring j (a
+ * ball of shells, round(4 pi j^2 + pi/3) particles each on a Fibonacci sphere): a smooth
+ * surface, each particle dr^n of space, N dr^n within 0.2 % of the disc of radius R + dr/2. */
+static double smooth_disc_eps(int dim, int R, const raster_params *rp)
+{
+    cloud c;
+    cloud_init(&c);
+    double o = (2 * R + 6.37) * dr, size[3] = {2 * o, 2 * o, 2 * o};
+    cloud_add(&c, o, o, dim == 3 ? o : 0.0);
+    for (int j = 1; j <= R; j++) {
+        if (dim == 2) {
+            int m = (int)lround(2 * PI * j);
+            for (int i = 0; i < m; i++) {
+                double a = 2 * PI * (i + 0.5 * (j % 2)) / m;
+                cloud_add(&c, o + j * dr * cos(a), o + j * dr * sin(a), 0.0);
+            }
+        } else {
+            int m = (int)lround(4 * PI * j * j + PI / 3);
+            double golden = PI * (3.0 - sqrt(5.0));
+            for (int i = 0; i < m; i++) {
+                double z = 1.0 - (2 * i + 1.0) / m, rr = sqrt(1.0 - z * z), a = i * golden + j;
+                cloud_add(&c, o + j * dr * rr * cos(a), o + j * dr * rr * sin(a), o + j * dr * z);
+            }
+        }
+    }
+    double e = eps_gm(dim, &c, size, rp);
+    cloud_free(&c);
+    return e;
+}
+
+/* A block of N x N (x N) lattice particles turned by 30 degrees about z (and 20 about x in 3D),
+ * floating in the middle of a tank 2N wide: free surface all round, oblique to the pixels. */
+static double rotated_block_eps(int dim, int N, const raster_params *rp)
+{
+    cloud c;
+    cloud_init(&c);
+    double size[3] = {2 * N * dr, 2 * N * dr, 2 * N * dr};
+    double a = 30.0 * PI / 180.0, b = dim == 3 ? 20.0 * PI / 180.0 : 0.0;
+    for (int k = 0; k < (dim == 3 ? N : 1); k++)
+        for (int j = 0; j < N; j++)
+            for (int i = 0; i < N; i++) {
+                double p[3] = {(i + 0.5 - 0.5 * N) * dr, (j + 0.5 - 0.5 * N) * dr,
+                               dim == 3 ? (k + 0.5 - 0.5 * N) * dr : 0.0};
+                double q0 = cos(a) * p[0] - sin(a) * p[1], q1 = sin(a) * p[0] + cos(a) * p[1];
+                double r1 = cos(b) * q1 - sin(b) * p[2], r2 = sin(b) * q1 + cos(b) * p[2];
+                cloud_add(&c, N * dr + q0, N * dr + r1, dim == 3 ? N * dr + r2 : 0.0);
+            }
+    double e = eps_gm(dim, &c, size, rp);
+    cloud_free(&c);
+    return e;
+}
+
+/* The lattice block with spacing dr (1 - e), N = 20: eps_GM - ((1 - e)^n - 1). */
+static double compressed_block_error(int dim, int N, double e, const raster_params *rp)
+{
+    cloud c;
+    cloud_init(&c);
+    int n[3] = {dim == 3 ? N : 2 * N, N, N};
+    double s = dr * (1.0 - e);
+    double size[3] = {n[0] * s, (N + 8) * dr, n[2] * s};
+    add_block(&c, dim, n, s, (double[3]){0.0, 0.0, 0.0});
+    double got = eps_gm(dim, &c, size, rp);
+    cloud_free(&c);
+    return got - (pow(1.0 - e, dim) - 1.0);
+}
+
+typedef double (*config_fn)(int dim, int variant, const raster_params *rp);
+
+static double cfg_block(int dim, int N, const raster_params *rp)
+{
+    return lattice_block_eps(dim, N, 0.0, 0, rp);
+}
+static double cfg_disc(int dim, int R, const raster_params *rp)
+{
+    return lattice_disc_eps(dim, R, rp);
+}
+static double cfg_smooth(int dim, int R, const raster_params *rp)
+{
+    return smooth_disc_eps(dim, R, rp);
+}
+static double cfg_rotated(int dim, int N, const raster_params *rp)
+{
+    return rotated_block_eps(dim, N, rp);
+}
+static double cfg_perturbed(int dim, int percent, const raster_params *rp)
+{
+    double sum = 0.0;
+    for (uint64_t seed = 1; seed <= 3; seed++)
+        sum += lattice_block_eps(dim, 20, 0.01 * percent, seed, rp);
+    return sum / 3.0;
+}
+static double cfg_compressed(int dim, int N, const raster_params *rp)
+{
+    return compressed_block_error(dim, N, 0.01, rp);
+}
+
+static void table(const char *title, config_fn f, const int *variants, int n_variants,
+                  const char *vname, const char *which)
+{
+    const int ks[2] = {4, 8};
+    for (int dim = 2; dim <= 3; dim++) {
+        if (!strchr(which, '0' + dim)) continue;
+        printf("\n%s, %dD (%%)\n\n| rule |", title, dim);
+        for (int ik = 0; ik < 2; ik++)
+            for (int v = 0; v < n_variants; v++) printf(" k=%d %s%d |", ks[ik], vname, variants[v]);
+        printf("\n|---|");
+        for (int c = 0; c < 2 * n_variants; c++) printf("---:|");
+        printf("\n");
+        for (size_t r = 0; r < N_RULES; r++) {
+            printf("| %s |", rules[r].name);
+            for (int ik = 0; ik < 2; ik++)
+                for (int v = 0; v < n_variants; v++) {
+                    raster_params rp = {
+                        .k = ks[ik], .radius = rules[r].radius, .closing = rules[r].closing};
+                    printf(" %+.2f |", 100.0 * f(dim, variants[v], &rp));
+                    fflush(stdout);
+                }
+            printf("\n");
+        }
+    }
+}
+
+static void gap_table(const char *which)
+{
+    for (int dim = 2; dim <= 3; dim++) {
+        if (!strchr(which, '0' + dim)) continue;
+        raster_params rp = raster_params_default(dim);
+        double c = rp.closing * dr, one = two_blocks_volume(dim, 4.0 * c, 1, &rp);
+        printf(
+            "\nbridge between two blocks of 8^%d particles, %dD, k = %d, c = %g dr, in %% of one "
+            "block\n\n| gap / c |",
+            dim, dim, rp.k, rp.closing);
+        for (int i = 0; i <= 9; i++) printf(" %.2f |", 0.25 * i);
+        printf("\n|---|");
+        for (int i = 0; i <= 9; i++) printf("---:|");
+        printf("\n| bridge |");
+        for (int i = 0; i <= 9; i++) {
+            double v = two_blocks_volume(dim, 0.25 * i * c, 2, &rp);
+            printf(" %+.2f |", 100.0 * (v - 2.0 * one) / one);
+        }
+        printf("\n");
+    }
+}
+
+static void timing_table(const char *which)
+{
+    for (int dim = 2; dim <= 3; dim++) {
+        if (!strchr(which, '0' + dim)) continue;
+        cloud c;
+        cloud_init(&c);
+        int n[3] = {dim == 3 ? 50 : 250, dim == 3 ? 40 : 200, 50};
+        double size[3] = {n[0] * dr, 1.5 * n[1] * dr, n[2] * dr};
+        add_block(&c, dim, n, dr, (double[3]){0.0, 0.0, 0.0});
+        for (int k = 4; k <= 8; k += 4) {
+            raster_params rp = raster_params_default(dim);
+            rp.k = k;
+            double best = INFINITY;
+            for (int rep = 0; rep < 3; rep++) {
+                double t0 = omp_get_wtime();
+                gm_volume(dim, &c, size, &rp);
+                best = fmin(best, omp_get_wtime() - t0);
+            }
+            double pixels = 1.0;
+            for (int d = 0; d < dim; d++) pixels *= ceil(size[d] / (dr / k) - 1e-9);
+            printf(
+                "timing %dD, %zu particles, k = %d, c = %g dr, %.3g pixels, %d threads: %.3f s\n",
+                dim, c.n, k, rp.closing, pixels, omp_get_max_threads(), best);
+        }
+        cloud_free(&c);
+    }
+}
+
+static void print_tables(const char *what)
+{
+    const int Ns[3] = {10, 20, 40}, R[1] = {10}, N20[1] = {20}, pert[2] = {5, 20};
+    if (strchr(what, 'b')) table("lattice block, eps_GM", cfg_block, Ns, 3, "N=", what);
+    if (strchr(what, 'd')) table("lattice disc (ball), eps_GM", cfg_disc, R, 1, "R/dr=", what);
+    if (strchr(what, 's'))
+        table("smooth disc (ball) of rings (shells), eps_GM", cfg_smooth, R, 1, "R/dr=", what);
+    if (strchr(what, 'r')) table("rotated block, eps_GM", cfg_rotated, N20, 1, "N=", what);
+    if (strchr(what, 'p'))
+        table("perturbed block N = 20, mean eps_GM of 3", cfg_perturbed, pert, 2, "a%=", what);
+    if (strchr(what, 'c'))
+        table("compressed block, e = 1 %, eps_GM - ((1-e)^n - 1)", cfg_compressed, N20, 1,
+              "N=", what);
+    if (strchr(what, 'g')) gap_table(what);
+    if (strchr(what, 't')) timing_table(what);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_closing_matches_brute_force),
+        cmocka_unit_test(test_lattice_block),
+        cmocka_unit_test(test_lattice_disc),
+        cmocka_unit_test(test_compressed_block),
+        cmocka_unit_test(test_blobs_not_bridged),
+        cmocka_unit_test(test_thread_count),
+        cmocka_unit_test(test_bad_input),
+    };
+    const char *what = getenv("VCSPH_RASTER_TABLE");
+    if (what) print_tables(what);
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
