@@ -35,7 +35,8 @@ static double support_pairs(const solver *s)
 static double bytes_per_particle(const solver *s)
 {
     const particles *p = &s->p;
-    double per_slot = (5.0 * DIM + 8.0) * sizeof(double) + sizeof(int64_t) + 5.0;
+    /* the double arrays of particles.c, the id, ghost source and walls, surface flags */
+    double per_slot = (6.0 * DIM + 11.0) * sizeof(double) + sizeof(int64_t) + 4.0 + 3.0;
     double store = per_slot * (double)p->capacity;
     double work = (2.0 * RK_VARS + RK_VARS + 1.0) * sizeof(double) * (double)p->n_fluid +
                   sizeof(size_t) * (double)p->n_fluid;

@@ -555,9 +555,52 @@ static void test_breakdown_exits_3(void **state)
     free(events);
 }
 
+/* `vcsph volume` on the snapshots of a run with output.graphical = true prints, for each
+ * snapshot, the eps_v1 and eps_gm of the time-series row of the same time: the same
+ * definitions computed from the same state (round-off of the printed digits only). */
+static void test_volume_command_matches_series(void **state)
+{
+    fixture *fx = *state;
+    write_file(fx, "tiny.ini", tiny_case);
+    int rc = run_vcsph(
+        fx, (const char *const[]){"run", "tiny.ini", "--set", "output.graphical=true", "--set",
+                                  "output.snapshot_every=0.01", "-o", "res", "--quiet", NULL});
+    assert_int_equal(rc, 0);
+    rc = run_vcsph(fx, (const char *const[]){"volume", "res/snapshots/000000.h5",
+                                             "res/snapshots/000003.h5", "res/snapshots/000005.h5",
+                                             NULL});
+    char *out = read_file(fx, "stdout.txt");
+    assert_int_equal(rc, 0);
+    char path[512];
+    path_in(fx, "res/timeseries.csv", path, sizeof path);
+    table ts;
+    assert_int_equal(table_read(&ts, path), 0);
+    const double *t = table_column(&ts, "t"), *eps_v1 = table_column(&ts, "eps_v1");
+    const double *eps_gm = table_column(&ts, "eps_gm");
+    assert_true(strncmp(out, "t,eps_v1,eps_gm\n", 16) == 0);
+    int rows = 0;
+    for (const char *line = next_line(out); line && *line; line = next_line(line)) {
+        double tv, e1, egm;
+        assert_int_equal(sscanf(line, "%lf,%lf,%lf", &tv, &e1, &egm), 3);
+        size_t r = 0;
+        while (r < ts.n_rows && fabs(t[r] - tv) > 1e-12) r++;
+        if (r == ts.n_rows) fail_msg("no time-series row at t = %g", tv);
+        assert_false(isnan(eps_gm[r]));
+        assert_close(e1, eps_v1[r], 1e-12);
+        assert_close(egm, eps_gm[r], 1e-12);
+        rows++;
+    }
+    assert_int_equal(rows, 3);
+    table_free(&ts);
+    free(out);
+    /* not a snapshot: exit 2 with a message */
+    write_file(fx, "junk.h5", "not hdf5");
+    assert_int_equal(run_vcsph(fx, (const char *const[]){"volume", "junk.h5", NULL}), 2);
+}
+
 int main(void)
 {
-    struct CMUnitTest tests[N_BAD + 3];
+    struct CMUnitTest tests[N_BAD + 4];
     for (size_t k = 0; k < N_BAD; k++)
         tests[k] = (struct CMUnitTest){bad_cases[k].name, test_bad_input, setup, teardown,
                                        (void *)&bad_cases[k]};
@@ -567,5 +610,7 @@ int main(void)
                                                                           setup, teardown);
     tests[N_BAD + 2] =
         (struct CMUnitTest)cmocka_unit_test_setup_teardown(test_breakdown_exits_3, setup, teardown);
-    return _cmocka_run_group_tests("test_cli", tests, N_BAD + 3, NULL, NULL);
+    tests[N_BAD + 3] = (struct CMUnitTest)cmocka_unit_test_setup_teardown(
+        test_volume_command_matches_series, setup, teardown);
+    return _cmocka_run_group_tests("test_cli", tests, N_BAD + 4, NULL, NULL);
 }
