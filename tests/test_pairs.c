@@ -1,6 +1,8 @@
 /* Each pair term of Eqs. (3)-(5) alone against a hand calculation, with the signs of
  * theory §3 (grad_i W_ij = r_ji F_ij, F > 0). */
+#include "physics/ale.h"
 #include "physics/continuity.h"
+#include "physics/shifting.h"
 #include "physics/diffusion.h"
 #include "physics/eos.h"
 #include "physics/pressure.h"
@@ -111,6 +113,65 @@ static void test_eos(void **state)
     assert_close(de, eos_pressure(rho, 1000.0, 20.0) / (rho * rho), 1e-8);
 }
 
+/* Eq. (7): the shifting pair term points from i to j (summed and multiplied by -xi h U_max
+ * it pushes i away from crowded neighbours); the R term weighs a neighbour at distance dr by
+ * 1 + 0.2 (W/W(dr))^4 = 1.2 */
+static void test_shifting(void **state)
+{
+    (void)state;
+    vec r_ji = along_x(0.02);
+    vec s = shifting_pair(5.0, 5.0, r_ji, 3.0e4, 4.0e-4);
+    assert_close(s.c[0], 1.2 * 0.02 * 3.0e4 * 4.0e-4, 1e-15);
+    vec far = shifting_pair(0.0, 5.0, r_ji, 3.0e4, 4.0e-4);
+    assert_close(far.c[0], 0.02 * 3.0e4 * 4.0e-4, 1e-15);
+    /* limiter: min(|du*|, max |u_ij| / 2, U_max / 2) along du* */
+    vec du = along_x(3.0);
+    assert_close(shifting_limit(du, 1.0, 10.0).c[0], 0.5, 1e-15);
+    assert_close(shifting_limit(du, 100.0, 4.0).c[0], 2.0, 1e-15);
+    assert_close(shifting_limit(along_x(0.1), 100.0, 4.0).c[0], 0.1, 1e-15);
+    /* tangential part: no component along the normal is left */
+    vec n = vec_zero();
+    n.c[1] = 1.0;
+    vec v = vec_zero();
+    v.c[0] = 0.3;
+    v.c[1] = -0.7;
+    vec t = shifting_tangential(v, n);
+    assert_close(t.c[0], 0.3, 1e-15);
+    assert_close(t.c[1], 0.0, 1e-15);
+}
+
+/* ALE flux (rho_j du_j + rho_i du_i) . r_ji F: antisymmetric under the exchange of i and j
+ * (r_ij = -r_ji), so mass exchanged between two particles cancels exactly */
+static void test_ale_flux_and_mass_diffusion(void **state)
+{
+    (void)state;
+    vec r_ji = along_x(0.02), dui = along_x(0.01), duj = along_x(-0.03);
+    double f_ij = ale_flux_pair(1000.0, dui, 1010.0, duj, r_ji, 3.0e4);
+    double f_ji = ale_flux_pair(1010.0, duj, 1000.0, dui, vec_scale(r_ji, -1.0), 3.0e4);
+    /* (1000 * 0.01 + 1010 * -0.03) * 0.02 * 3e4 = -12180 */
+    assert_close(f_ij, -12180.0, 1e-9);
+    assert_true(f_ij == -f_ji);
+    double dm_ij = mass_diffusion_pair(0.1 * 10.0 * 0.01, 1.0, 1.1, 3.0e4, 4e-4, 5e-4);
+    double dm_ji = mass_diffusion_pair(0.1 * 10.0 * 0.01, 1.1, 1.0, 3.0e4, 5e-4, 4e-4);
+    /* 2 * 0.01 * 0.1 * 3e4 * sqrt(2e-7) */
+    assert_close(dm_ij, 2.0 * 0.01 * 0.1 * 3.0e4 * sqrt(4e-4 * 5e-4), 1e-15);
+    assert_true(dm_ij == -dm_ji);
+}
+
+/* rho_j u_ji (du_j . grad W) V_j: zero for a uniform flow (u_ji = 0), whatever du */
+static void test_ale_momentum(void **state)
+{
+    (void)state;
+    vec r_ji = along_x(0.02), duj = along_x(0.05), u_ji = vec_zero();
+    vec zero = ale_momentum_pair(1000.0, u_ji, duj, r_ji, 3.0e4, 4e-4);
+    for (int d = 0; d < DIM; d++) assert_true(zero.c[d] == 0.0);
+    u_ji.c[1] = 2.0;
+    vec f = ale_momentum_pair(1000.0, u_ji, duj, r_ji, 3.0e4, 4e-4);
+    /* 1000 * 2 * (0.05 * 0.02 * 3e4) * 4e-4 along u_ji */
+    assert_close(f.c[1], 1000.0 * 2.0 * 0.05 * 0.02 * 3.0e4 * 4e-4, 1e-9);
+    assert_true(f.c[0] == 0.0);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -121,6 +182,9 @@ int main(void)
         cmocka_unit_test(test_harmonic_mean_and_caps),
         cmocka_unit_test(test_eddy_viscosity),
         cmocka_unit_test(test_eos),
+        cmocka_unit_test(test_shifting),
+        cmocka_unit_test(test_ale_flux_and_mass_diffusion),
+        cmocka_unit_test(test_ale_momentum),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

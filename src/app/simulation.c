@@ -7,6 +7,7 @@
 #include "diag/volume.h"
 #include "io/csv.h"
 #include "io/snapshot.h"
+#include "scheme/control.h"
 #include "scheme/solver.h"
 
 #include <errno.h>
@@ -76,6 +77,18 @@ static int graphical_error(solver *s, double *eps_gm)
     return -1;
 }
 
+/* Whether EdBC, Eq. (9), acts in the current state (model.edbc, and eta for with-eta0). */
+static int edbc_active(const run *r)
+{
+    return r->cfg->edbc == EDBC_ON || (r->cfg->edbc == EDBC_WITH_ETA0 && r->s.eta == 0);
+}
+
+/* The eta switch (theory §8) acts in solver_prepare; its events are written here. */
+static void control_step(run *r)
+{
+    if (r->s.eta_switched) event(r, "eta_switch", r->s.eta_switch_detail);
+}
+
 /* One row of timeseries.csv (design §4). The volume columns need this step's geometry
  * (solver_prepare at the current state); a breakdown row has none and leaves them empty. */
 static void write_series_row(run *r, int with_geometry)
@@ -106,9 +119,9 @@ static void write_series_row(run *r, int with_geometry)
         csv_put_empty(c);
     csv_put(c, dg.vol_sph / r->v0 - 1.0);
     csv_put(c, dg.mass / r->mass0 - 1.0);
-    csv_put(c, 0.0);    /* eta */
-    csv_put(c, 0.0);    /* edbc */
-    csv_put_long(c, 0); /* n_edbc */
+    csv_put_long(c, s->eta);
+    csv_put_long(c, edbc_active(r));
+    csv_put_long(c, s->n_edbc);
     if (with_geometry)
         csv_put_long(c, ve.n_free_surface);
     else
@@ -300,7 +313,9 @@ static int time_loop(run *r)
     progress_start(&r->pr, cfg->t_end, s->p.n_fluid, s->step, r->opt->quiet);
     /* the initial state too: a sound speed too low for the hydrostatic column fails here */
     if (breakdown(r)) return RUN_BREAKDOWN;
-    if (prepare(r) || outputs_due(r, 0)) return RUN_FAILED;
+    if (prepare(r)) return RUN_FAILED;
+    control_step(r);
+    if (outputs_due(r, 0)) return RUN_FAILED;
     while (s->t < cfg->t_end) {
         solver_advance(s, cfg->t_end);
         if (s->max_displacement > 0.5 * s->skin) {
@@ -311,6 +326,7 @@ static int time_loop(run *r)
         if (breakdown(r)) return RUN_BREAKDOWN;
         /* the next step's neighbours and geometry are also this state's diagnostics */
         if (prepare(r)) return RUN_FAILED;
+        control_step(r);
         int last = s->t >= cfg->t_end;
         if (outputs_due(r, last)) return RUN_FAILED;
         progress_update(&r->pr, s->t, s->step, last);

@@ -76,6 +76,7 @@ void tank_mirror_step_fields(const tank *t, particles *p, vec g_eff, double c0)
         vec_store(p->grad_rho, g, vec_add(tank_mirror_vector(dynamic, walls), grad_hydro));
         p->nu_t[g] = p->nu_t[i];
         p->nu_delta[g] = p->nu_delta[i];
+        vec_store(p->shift, g, tank_mirror_vector(vec_load(p->shift, i), walls));
     }
 }
 

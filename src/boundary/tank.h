@@ -29,8 +29,9 @@ int tank_make_ghosts(const tank *t, particles *p, double reach);
 void tank_refresh_ghosts(const tank *t, particles *p, vec g_eff, double rho0, double c0);
 
 /* Per-step fields of the ghosts from their sources: eddy viscosity and diffusion coefficient
- * copied; density gradient = mirror of the source's dynamic part plus the hydrostatic
- * gradient rho g_eff / c0^2, consistent with the hydrostatic continuation above. */
+ * copied; shifting velocity mirrored (free slip); density gradient = mirror of the source's dynamic
+ * part plus the hydrostatic gradient rho g_eff / c0^2, consistent with the hydrostatic continuation
+ * above. */
 void tank_mirror_step_fields(const tank *t, particles *p, vec g_eff, double c0);
 
 /* After a step: particles closer than dr/4 to a wall and moving towards it have their normal

@@ -27,10 +27,11 @@ static int double_arrays(particles *p, double ***out)
     out[n++] = &p->normal_raw;
     out[n++] = &p->kernel_sum;
     out[n++] = &p->gamma;
+    out[n++] = &p->diff_m;
     return n;
 }
 
-#define MAX_ARRAYS (6 * DIM + 11)
+#define MAX_ARRAYS (6 * DIM + 12)
 
 static int grow(void **ptr, size_t count, size_t size)
 {
@@ -51,7 +52,8 @@ int particles_reserve(particles *p, size_t capacity)
         grow((void **)&p->ghost_source, capacity, sizeof(int32_t)) ||
         grow((void **)&p->ghost_walls, capacity, sizeof(uint8_t)) ||
         grow((void **)&p->surface, capacity, sizeof(uint8_t)) ||
-        grow((void **)&p->is_free, capacity, sizeof(uint8_t)))
+        grow((void **)&p->is_free, capacity, sizeof(uint8_t)) ||
+        grow((void **)&p->surface_ref, capacity, sizeof(int32_t)))
         return -1;
     /* new slots start as zeros: shifting and lambda are read before anything writes them */
     for (int k = 0; k < n; k++)
@@ -76,6 +78,7 @@ void particles_free(particles *p)
     free(p->ghost_walls);
     free(p->surface);
     free(p->is_free);
+    free(p->surface_ref);
     memset(p, 0, sizeof *p);
 }
 

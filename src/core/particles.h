@@ -29,6 +29,9 @@ typedef struct {
     double *gamma;         /* Gamma_i = sum_j W_ij V_j, self included, Eq. (A.2) */
     uint8_t *surface;      /* 0 interior, 1 in S_F, 2 free surface (Marrone et al. 2010) */
     uint8_t *is_free;      /* the free-surface test alone, read while `surface` is written */
+    int32_t *surface_ref;  /* in S_F: the free-surface particle whose normal applies (itself,
+                              or the nearest one); -1 elsewhere */
+    double *diff_m;        /* mass diffusion D^m of Eq. (5) (fluid) */
     double *shift[DIM];    /* shifting velocity delta-u, Eq. (7) (zero until shifting exists) */
     double *diff_rho;      /* density diffusion D^rho of Eq. (5) (fluid) */
 

@@ -79,15 +79,27 @@ void freesurface_detect(const kernel *k, double dr, double normal_reference, par
        mirror image is never closer than its source) */
 #pragma omp parallel for schedule(static)
     for (size_t i = 0; i < p->n_fluid; i++) {
-        uint8_t s = p->is_free[i] ? SURFACE_FREE : SURFACE_INTERIOR;
         vec xi = vec_load(p->x, i);
-        const int32_t *row = neighbour_row(nl, i);
-        for (int32_t m = 0; m < nl->count[i] && s == SURFACE_INTERIOR; m++) {
-            size_t j = (size_t)row[m];
-            if (j < p->n_fluid && p->is_free[j] &&
-                vec_norm2(vec_sub(vec_load(p->x, j), xi)) < k->support2)
-                s = SURFACE_REGION;
+        if (p->is_free[i]) {
+            p->surface[i] = SURFACE_FREE;
+            p->surface_ref[i] = (int32_t)i;
+            continue;
         }
-        p->surface[i] = s;
+        /* the nearest free-surface particle within the support, if any (its normal serves
+           the shifting of this particle, theory §4) */
+        double nearest = k->support2;
+        int32_t ref = -1;
+        const int32_t *row = neighbour_row(nl, i);
+        for (int32_t m = 0; m < nl->count[i]; m++) {
+            size_t j = (size_t)row[m];
+            if (j >= p->n_fluid || !p->is_free[j]) continue;
+            double r2 = vec_norm2(vec_sub(vec_load(p->x, j), xi));
+            if (r2 < nearest) {
+                nearest = r2;
+                ref = (int32_t)j;
+            }
+        }
+        p->surface[i] = ref >= 0 ? SURFACE_REGION : SURFACE_INTERIOR;
+        p->surface_ref[i] = ref;
     }
 }

@@ -1,7 +1,9 @@
 /* fields: per-step geometry and the frozen diffusion terms. */
 #include "scheme/fields.h"
 #include "diag/freesurface.h"
+#include "physics/ale.h"
 #include "physics/diffusion.h"
+#include "physics/shifting.h"
 #include "physics/viscosity.h"
 #include "scheme/pair.h"
 
@@ -90,34 +92,80 @@ static void geometry_and_gradients(const physics_params *pp, const tank *t, part
     }
 }
 
-static void density_diffusion(const physics_params *pp, particles *p, const neighbour_list *nl)
+/* Eq. (7): du*_i = -xi h U_max sum_j [1 + R (W_ij/W(dr))^4] grad_i W_ij V_j, limited, then
+ * made tangential in S_F and switched off where lambda < 0.4 (drops and jets: no reliable
+ * normal; theory §4, inferred from Sun et al. 2017). */
+static void shifting_velocity(const physics_params *pp, particles *p, const neighbour_list *nl)
+{
+    const kernel *k = &pp->k;
+#pragma omp parallel for schedule(static)
+    for (size_t i = 0; i < p->n_fluid; i++) {
+        vec xi = vec_load(p->x, i), ui = vec_load(p->u, i), sum = vec_zero();
+        double max_relative2 = 0.0;
+        const int32_t *row = neighbour_row(nl, i);
+        for (int32_t n = 0; n < nl->count[i]; n++) {
+            pair pr;
+            if (!pair_of(k, p->x, xi, row, n, &pr)) continue;
+            sum = vec_add(sum, shifting_pair(kernel_w(k, sqrt(pr.r2)), pp->w_dr, pr.r_ji, pr.f,
+                                             p->vol[pr.j]));
+            double rel2 = vec_norm2(vec_sub(vec_load(p->u, pr.j), ui));
+            if (rel2 > max_relative2) max_relative2 = rel2;
+        }
+        vec du = vec_scale(sum, -k->h * pp->shift_u_max);
+        du = shifting_limit(du, sqrt(max_relative2), pp->shift_u_max);
+        if (p->lambda[i] < SHIFTING_LAMBDA_MIN)
+            du = vec_zero();
+        else if (p->surface[i] != SURFACE_INTERIOR)
+            du = shifting_tangential(du, vec_load(p->normal, (size_t)p->surface_ref[i]));
+        vec_store(p->shift, i, du);
+    }
+}
+
+/* D^rho and D^m of Eq. (5), frozen over the step. The mass diffusion runs between fluid
+ * particles only: no mass crosses a wall, and the total mass stays exact. */
+static void diffusion(const physics_params *pp, particles *p, const neighbour_list *nl,
+                      const bool mass)
 {
     const kernel *k = &pp->k;
 #pragma omp parallel for schedule(static)
     for (size_t i = 0; i < p->n_fluid; i++) {
         vec xi = vec_load(p->x, i), gi = vec_load(p->grad_rho, i);
-        double rhoi = p->rho[i], nui = p->nu_delta[i], sum = 0.0;
+        double rhoi = p->rho[i], nui = p->nu_delta[i], mi = p->m[i], vi = p->vol[i];
+        double sum_rho = 0.0, sum_m = 0.0;
         const int32_t *row = neighbour_row(nl, i);
         for (int32_t n = 0; n < nl->count[i]; n++) {
             pair pr;
             if (!pair_of(k, p->x, xi, row, n, &pr)) continue;
             size_t j = pr.j;
             double delta_ij = harmonic_mean_capped(nui, p->nu_delta[j], pp->delta_cap);
-            sum += diffusion_rho_pair(delta_ij, rhoi, p->rho[j], gi, vec_load(p->grad_rho, j),
-                                      pr.r_ji, pr.f, p->vol[j]);
+            sum_rho += diffusion_rho_pair(delta_ij, rhoi, p->rho[j], gi, vec_load(p->grad_rho, j),
+                                          pr.r_ji, pr.f, p->vol[j]);
+            if (mass && j < p->n_fluid)
+                sum_m += mass_diffusion_pair(pp->delta_c0_h, mi, p->m[j], pr.f, vi, p->vol[j]);
         }
-        p->diff_rho[i] = sum;
+        p->diff_rho[i] = sum_rho;
+        p->diff_m[i] = sum_m;
     }
 }
 
-void fields_compute(const physics_params *pp, const tank *t, particles *p, const neighbour_list *nl,
-                    vec g_eff)
+void fields_geometry(const physics_params *pp, const tank *t, particles *p,
+                     const neighbour_list *nl)
 {
     geometry_and_gradients(pp, t, p, nl);
     freesurface_detect(&pp->k, pp->dr, pp->normal_reference, p, nl);
+}
+
+void fields_frozen_terms(const physics_params *pp, const tank *t, particles *p,
+                         const neighbour_list *nl, vec g_eff, bool variable_mass)
+{
+    if (pp->shifting) shifting_velocity(pp, p, nl);
     tank_mirror_step_fields(t, p, g_eff, pp->c0);
-    if (pp->c_delta > 0.0)
-        density_diffusion(pp, p, nl);
-    else
-        for (size_t i = 0; i < p->n_fluid; i++) p->diff_rho[i] = 0.0;
+    if (pp->c_delta > 0.0) {
+        if (variable_mass)
+            diffusion(pp, p, nl, true);
+        else
+            diffusion(pp, p, nl, false);
+    } else {
+        for (size_t i = 0; i < p->n_fluid; i++) p->diff_rho[i] = p->diff_m[i] = 0.0;
+    }
 }

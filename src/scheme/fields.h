@@ -9,11 +9,22 @@
 #include "core/particles.h"
 #include "scheme/physics_params.h"
 
-#define fields_compute DIM_NAME(fields_compute)
+#define fields_geometry     DIM_NAME(fields_geometry)
+#define fields_frozen_terms DIM_NAME(fields_frozen_terms)
 
-/* Needs the ghosts refreshed; fills lambda, grad_rho, nu_t, nu_delta of fluid and ghosts and
- * diff_rho of the fluid. */
-void fields_compute(const physics_params *pp, const tank *t, particles *p, const neighbour_list *nl,
-                    vec g_eff);
+/* Lambda below which a particle gets no shifting (theory §4). */
+#define SHIFTING_LAMBDA_MIN 0.4
+
+/* The geometry of the step (needs the ghosts refreshed): L, lambda, the normal, sum W,
+ * sum W V, the renormalized density and velocity gradients, nu_t, nu_delta (fluid), then the
+ * free surface and S_F. */
+void fields_geometry(const physics_params *pp, const tank *t, particles *p,
+                     const neighbour_list *nl);
+
+/* The terms frozen over the RK stages (sec. 2.4), after EdBC has corrected the densities:
+ * the shifting velocity of Eq. (7) (when the scheme shifts), the ghosts' copies of the
+ * per-step fields, D^rho and, with variable masses, D^m of Eq. (5). */
+void fields_frozen_terms(const physics_params *pp, const tank *t, particles *p,
+                         const neighbour_list *nl, vec g_eff, bool variable_mass);
 
 #endif

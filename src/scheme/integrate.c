@@ -1,6 +1,8 @@
 /* integrate: one time step, Eq. (8) and RK4 with frozen per-step terms (sec. 2.4). */
 #include "boundary/tank.h"
 #include "core/reduce.h"
+#include "diag/volume.h"
+#include "scheme/control.h"
 #include "scheme/fields.h"
 #include "scheme/solver.h"
 
@@ -113,7 +115,20 @@ int solver_prepare(solver *s, double t_stop)
     if (s->t + dt > t_stop) dt = t_stop - s->t;
     s->dt = dt;
     if (build_neighbours(s, dt)) return -1;
-    fields_compute(&s->pp, &s->tank, &s->p, &s->nl, solver_g_eff(s, s->t));
+    vec g_eff = solver_g_eff(s, s->t);
+    fields_geometry(&s->pp, &s->tank, &s->p, &s->nl);
+    s->eta_switched = 0;
+    if (s->cfg->scheme == SCHEME_DELTA_PLUS_ALE) {
+        /* eps_V1 of this state decides eta for the step (theory §8) */
+        volume_errors ve;
+        volume_compute(&s->p, s->dv.v0 / (double)s->p.n_fluid, s->scratch, &ve);
+        s->eta_switched =
+            control_eta_switch(s, ve.eps_v1, s->eta_switch_detail, sizeof s->eta_switch_detail);
+    }
+    control_edbc(s);
+    if (s->n_edbc > 0) /* the ghosts of corrected particles carry the corrected state */
+        tank_refresh_ghosts(&s->tank, &s->p, g_eff, s->pp.rho0, s->pp.c0);
+    fields_frozen_terms(&s->pp, &s->tank, &s->p, &s->nl, g_eff, s->eta);
     return 0;
 }
 
@@ -138,7 +153,7 @@ void solver_advance(solver *s, double t_stop)
             solver_update_eos(s);
             tank_refresh_ghosts(&s->tank, p, g_eff, s->pp.rho0, s->pp.c0);
         }
-        rhs_compute(&s->pp, p, &s->nl, g_eff, &s->k);
+        rhs_compute(&s->pp, p, &s->nl, g_eff, s->eta, &s->k);
         if (stage == 0) s->max_acc = max_acceleration(s);
         work += stage_w[stage] * input_power(s, ts);
         double w = stage_w[stage];

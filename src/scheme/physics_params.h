@@ -16,6 +16,10 @@ typedef struct {
     double nu_t_cap;           /* upper bound of mu^T_ij / rho0: 0.1 l c0 / K (sec. 2.2) */
     double lambda_renormalize; /* use L^-1 in gradients only when lambda exceeds this */
     double normal_reference;   /* |L^-1 sum grad W V| on a flat lattice surface (theory §4) */
+    bool shifting;             /* xi = 1 of Table 1: particle shifting, Eq. (7), ALE terms */
+    double shift_u_max;        /* U_max of Eq. (7): the reference speed c0 / 10 of Eq. (6) */
+    double w_dr;               /* W(dr) of Eq. (7) */
+    double delta_c0_h;         /* delta c0 h of D^m, Eq. (5) */
     bool les;                  /* Smagorinsky eddy viscosity */
     bool van_driest;           /* damp it near no-slip walls */
 } physics_params;

@@ -1,21 +1,26 @@
-/* rhs: continuity, pressure and viscous forces, gravity (Eqs. 3, 4). */
+/* rhs: continuity, pressure and viscous forces, gravity, ALE terms and masses (Eqs. 3, 4). */
 #include "scheme/rhs.h"
+#include "physics/ale.h"
 #include "physics/continuity.h"
 #include "physics/pressure.h"
 #include "physics/viscosity.h"
 #include "scheme/pair.h"
 
-/* One particle's sums. `les` is a compile-time constant at each call below, so the loop is
- * specialised once per loop, never tested per pair (design §2). */
+/* One particle's sums. `les`, `ale` and `variable_mass` are compile-time constants at each
+ * call below, so the loop is specialised once per loop, never tested per pair (design §2).
+ * With ale (shifting on, Eq. 3): the particles move with u + du, the continuity equation
+ * gains -rho_i du_ji . grad W V_j and the flux div(rho du), the momentum equation
+ * rho (du . grad) u, and with variable masses dm/dt = div(rho du) V_i + D^m. */
 static inline void rhs_particle(const physics_params *pp, const particles *p,
                                 const neighbour_list *nl, size_t i, vec g_eff, const bool les,
-                                const rates *out)
+                                const bool ale, const bool variable_mass, const rates *out)
 {
     const kernel *k = &pp->k;
     vec xi = vec_load(p->x, i), ui = vec_load(p->u, i), uwi = vec_load(p->u_wall, i);
-    double rhoi = p->rho[i], pi = p->p[i], nuti = p->nu_t[i];
+    vec dui = vec_load(p->shift, i);
+    double rhoi = p->rho[i], pi = p->p[i], nuti = p->nu_t[i], vi = p->vol[i];
     double mu = pp->rho0 * pp->nu;
-    double drho = 0.0;
+    double drho = 0.0, mass_flux = 0.0;
     vec force = vec_zero(); /* per unit volume */
     const int32_t *row = neighbour_row(nl, i);
     for (int32_t n = 0; n < nl->count[i]; n++) {
@@ -23,7 +28,17 @@ static inline void rhs_particle(const physics_params *pp, const particles *p,
         if (!pair_of(k, p->x, xi, row, n, &pr)) continue;
         size_t j = pr.j;
         double vj = p->vol[j];
-        drho += continuity_pair(rhoi, vec_sub(vec_load(p->u, j), ui), pr.r_ji, pr.f, vj);
+        vec u_ji = vec_sub(vec_load(p->u, j), ui);
+        if (ale) {
+            vec duj = vec_load(p->shift, j);
+            u_ji = vec_add(u_ji, vec_sub(duj, dui)); /* (u + du)_ji */
+            double flux = ale_flux_pair(rhoi, dui, p->rho[j], duj, pr.r_ji, pr.f);
+            drho += flux * vj;
+            if (variable_mass && j < p->n_fluid) mass_flux += flux * vi * vj;
+            vec u_only = vec_sub(vec_load(p->u, j), ui);
+            force = vec_add(force, ale_momentum_pair(p->rho[j], u_only, duj, pr.r_ji, pr.f, vj));
+        }
+        drho += continuity_pair(rhoi, u_ji, pr.r_ji, pr.f, vj);
         force = vec_add(force, pressure_pair(pi, p->p[j], pr.r_ji, pr.f, vj));
         double mu_eff = mu;
         if (les) mu_eff += pp->rho0 * harmonic_mean_capped(nuti, p->nu_t[j], pp->nu_t_cap);
@@ -34,19 +49,27 @@ static inline void rhs_particle(const physics_params *pp, const particles *p,
     vec acc = vec_axpy(g_eff, 1.0 / rhoi, force);
     for (int d = 0; d < DIM; d++) {
         out->du[d][i] = acc.c[d];
-        out->dx[d][i] = ui.c[d] + p->shift[d][i];
+        out->dx[d][i] = ui.c[d] + dui.c[d];
     }
-    out->dm[i] = 0.0;
+    /* Eq. (3): dm/dt = eta [div(rho du) V_i + D^m] (fluid pairs only: the total is exact) */
+    out->dm[i] = variable_mass ? mass_flux + p->diff_m[i] : 0.0;
 }
 
+#define RHS_LOOP(les, ale, mass)                                                                   \
+    _Pragma("omp parallel for schedule(static)") for (size_t i = 0; i < p->n_fluid; i++)           \
+        rhs_particle(pp, p, nl, i, g_eff, les, ale, mass, out)
+
 void rhs_compute(const physics_params *pp, const particles *p, const neighbour_list *nl, vec g_eff,
-                 const rates *out)
+                 bool variable_mass, const rates *out)
 {
-    if (pp->les) {
-#pragma omp parallel for schedule(static)
-        for (size_t i = 0; i < p->n_fluid; i++) rhs_particle(pp, p, nl, i, g_eff, true, out);
-    } else {
-#pragma omp parallel for schedule(static)
-        for (size_t i = 0; i < p->n_fluid; i++) rhs_particle(pp, p, nl, i, g_eff, false, out);
+    /* variable masses come only with shifting (Table 1: eta = 1 implies xi = 1) */
+    int variant = (pp->les ? 4 : 0) + (pp->shifting ? 2 : 0) + (pp->shifting && variable_mass);
+    switch (variant) {
+    case 0: RHS_LOOP(false, false, false); break;
+    case 2: RHS_LOOP(false, true, false); break;
+    case 3: RHS_LOOP(false, true, true); break;
+    case 4: RHS_LOOP(true, false, false); break;
+    case 6: RHS_LOOP(true, true, false); break;
+    default: RHS_LOOP(true, true, true); break;
     }
 }

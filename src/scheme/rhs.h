@@ -18,8 +18,9 @@ typedef struct {
 #define rhs_compute DIM_NAME(rhs_compute)
 
 /* Needs fluid p, vol, u_wall and the ghosts refreshed for this stage, and the frozen per-step
- * fields. g_eff = g - a_tank(t) is the body force in the tank frame (theory §6). */
+ * fields. g_eff = g - a_tank(t) is the body force in the tank frame (theory §6);
+ * variable_mass is eta = 1 of Eq. (3). */
 void rhs_compute(const physics_params *pp, const particles *p, const neighbour_list *nl, vec g_eff,
-                 const rates *out);
+                 bool variable_mass, const rates *out);
 
 #endif

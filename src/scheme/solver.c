@@ -25,6 +25,10 @@ static void physics_setup(solver *s)
     pp->nu_t_cap = 0.1 * pp->filter_length * pp->c0 / (2.0 * (DIM + 2)); /* sec. 2.2 */
     pp->lambda_renormalize = 0.2; /* theory §2 (guessed there; kept) */
     pp->normal_reference = freesurface_reference_normal(&pp->k, pp->dr);
+    pp->shifting = mp.xi > 0.0;
+    pp->shift_u_max = 0.1 * pp->c0; /* theory §4 (inferred from Sun et al. 2019) */
+    pp->w_dr = kernel_w(&pp->k, pp->dr);
+    pp->delta_c0_h = mp.delta * pp->c0 * pp->k.h;
     pp->les = cfg->les;
     pp->van_driest = cfg->les && cfg->wall == WALL_NO_SLIP;
 }
@@ -71,6 +75,8 @@ int solver_init(solver *s, const config *cfg, char *err, size_t err_len)
         solver_free(s);
         return 2;
     }
+    /* Table 1: delta-ALE has variable masses; delta-plus-ALE starts as delta-plus (sec. 5.1.1) */
+    s->eta = models_params(cfg->scheme).eta == 1;
     /* before any step, the only known acceleration is the largest effective gravity */
     s->max_acc = s->dv.g_max;
     return 0;

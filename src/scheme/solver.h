@@ -35,10 +35,15 @@ typedef struct {
     double t, dt;   /* time; size of the prepared step */
     double last_dt; /* size of the step that ended at t */
     long step;
-    double max_acc;          /* largest |du/dt| of the last step (dt_a of Eq. 8) */
-    double skin;             /* neighbour-list margin of this step */
-    double max_displacement; /* largest move of a particle during the last step */
-    double work_in;          /* integral of the input power -sum m a_tank . u */
+    double max_acc;              /* largest |du/dt| of the last step (dt_a of Eq. 8) */
+    double skin;                 /* neighbour-list margin of this step */
+    double max_displacement;     /* largest move of a particle during the last step */
+    double work_in;              /* integral of the input power -sum m a_tank . u */
+    int eta;                     /* eta of Eq. (3): 1 = variable masses (delta-ALE; switched in
+                                    delta-plus-ALE) */
+    long n_edbc;                 /* particles corrected by EdBC at the last step start */
+    int eta_switched;            /* the last solver_prepare switched eta ... */
+    char eta_switch_detail[160]; /* ... and how */
 } solver;
 
 #define solver_init       DIM_NAME(solver_init)

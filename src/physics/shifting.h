@@ -1,0 +1,33 @@
+/* shifting: the particle shifting velocity of Eq. (7) (Sun et al. 2019), pair term and
+ * limiter. */
+#ifndef VCSPH_SHIFTING_H
+#define VCSPH_SHIFTING_H
+
+#include "core/vec.h"
+
+#define SHIFTING_R 0.2 /* R of Eq. (7) */
+
+/* [1 + R (W_ij / W(dr))^4] grad_i W_ij V_j: summed over j and multiplied by -xi h U_max it
+ * is du*_i; the anti-clustering R term pushes harder on near neighbours. */
+static inline vec shifting_pair(double w_ij, double w_dr, vec r_ji, double f_ij, double vol_j)
+{
+    double q = w_ij / w_dr, q2 = q * q;
+    return vec_scale(r_ji, (1.0 + SHIFTING_R * q2 * q2) * f_ij * vol_j);
+}
+
+/* Eq. (7), second line: |du| = min(|du*|, max_j |u_ij| / 2, U_max / 2) along du*. */
+static inline vec shifting_limit(vec du, double max_relative_speed, double u_max)
+{
+    double norm = vec_norm(du), cap = 0.5 * max_relative_speed;
+    if (0.5 * u_max < cap) cap = 0.5 * u_max;
+    return norm > cap ? vec_scale(du, cap / norm) : du;
+}
+
+/* Near the free surface the normal component is removed, so that shifting does not move the
+ * surface (theory §4): (I - n (x) n) du. */
+static inline vec shifting_tangential(vec du, vec normal)
+{
+    return vec_axpy(du, -vec_dot(du, normal), normal);
+}
+
+#endif
