@@ -13,6 +13,7 @@
 
 #include "check.h"
 #include "table.h"
+#include "run_case.h"
 
 static const char sap_case[] = "[case]\nname = sap-standard\ndim = 2\nt_end = 0.5\n"
                                "[tank]\nlength = 0.1172\nheight = 0.0272\n"
@@ -27,17 +28,9 @@ static const char sap_case[] = "[case]\nname = sap-standard\ndim = 2\nt_end = 0.
 static void test_standard_sph_keeps_volume(void **state)
 {
     (void)state;
-    char dir[] = "/tmp/vcsph-sap-XXXXXX";
-    assert_non_null(mkdtemp(dir));
-    config cfg;
-    char err[1024];
-    assert_int_equal(config_load_string(&cfg, sap_case, "sap", NULL, 0, err, sizeof err), 0);
-    run_options opt = {dir, true};
-    assert_int_equal(simulation_run(&cfg, &opt), RUN_OK);
-    char path[512];
-    snprintf(path, sizeof path, "%s/timeseries.csv", dir);
+    char dir[64];
     table t;
-    assert_int_equal(table_read(&t, path), 0);
+    run_case_text(sap_case, NULL, 0, dir, &t);
     const double *eps = table_column(&t, "eps_v1"), *time = table_column(&t, "t");
     const double *n_free = table_column(&t, "n_free_surface");
     double worst = 0.0;

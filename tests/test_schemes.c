@@ -14,6 +14,7 @@
 
 #include "check.h"
 #include "table.h"
+#include "run_case.h"
 
 static const char sap_case[] = "[case]\nname = sap\ndim = 2\nt_end = 0.1\n"
                                "[tank]\nlength = 0.1172\nheight = 0.0272\n"
@@ -26,20 +27,11 @@ static const char sap_case[] = "[case]\nname = sap\ndim = 2\nt_end = 0.1\n"
 
 static void run_scheme(const char *scheme)
 {
-    char dir[] = "/tmp/vcsph-scheme-XXXXXX";
-    assert_non_null(mkdtemp(dir));
-    char set[64];
+    char set[64], dir[64];
     snprintf(set, sizeof set, "model.scheme=%s", scheme);
     const char *overrides[] = {set};
-    config cfg;
-    char err[1024];
-    assert_int_equal(config_load_string(&cfg, sap_case, "sap", overrides, 1, err, sizeof err), 0);
-    run_options opt = {dir, true};
-    assert_int_equal(simulation_run(&cfg, &opt), RUN_OK);
-    char path[512];
-    snprintf(path, sizeof path, "%s/timeseries.csv", dir);
     table t;
-    assert_int_equal(table_read(&t, path), 0);
+    run_case_text(sap_case, overrides, 1, dir, &t);
     const double *mass_err = table_column(&t, "mass_err"), *eta = table_column(&t, "eta");
     double worst = 0.0;
     for (size_t r = 0; r < t.n_rows; r++) worst = fmax(worst, fabs(mass_err[r]));

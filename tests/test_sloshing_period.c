@@ -15,6 +15,7 @@
 
 #include "check.h"
 #include "table.h"
+#include "run_case.h"
 
 static const char free_sloshing_case[] = "[case]\nname = free-sloshing\ndim = 2\nt_end = 6.6\n"
                                          "[tank]\nlength = 1.0\nheight = 1.0\n"
@@ -28,19 +29,9 @@ static const char free_sloshing_case[] = "[case]\nname = free-sloshing\ndim = 2\
 static void test_first_mode_period(void **state)
 {
     (void)state;
-    char dir[] = "/tmp/vcsph-sloshing-XXXXXX";
-    assert_non_null(mkdtemp(dir));
-    config cfg;
-    char err[1024];
-    assert_int_equal(
-        config_load_string(&cfg, free_sloshing_case, "free-sloshing", NULL, 0, err, sizeof err), 0);
-    run_options opt = {dir, true};
-    assert_int_equal(simulation_run(&cfg, &opt), RUN_OK);
-
-    char path[512];
-    snprintf(path, sizeof path, "%s/timeseries.csv", dir);
+    char dir[64];
     table t;
-    assert_int_equal(table_read(&t, path), 0);
+    run_case_text(free_sloshing_case, NULL, 0, dir, &t);
     const double *time = table_column(&t, "t"), *com_x = table_column(&t, "com_x");
     /* upward zero crossings of com_x about its mean, after the forcing has stopped */
     double mean = 0.0;

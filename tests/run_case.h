@@ -1,0 +1,29 @@
+/* run_case: runs a case given as text in a fresh temporary folder and reads its time series
+ * back, for the integration tests. Include after <cmocka.h>, "check.h" and "table.h". */
+#ifndef VCSPH_TEST_RUN_CASE_H
+#define VCSPH_TEST_RUN_CASE_H
+
+#include "app/simulation.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+
+/* Loads `text` with the --set style overrides, runs it quietly in a new folder under /tmp
+ * (its path in dir, 64 bytes) and reads dir/timeseries.csv into t. */
+static inline void run_case_text(const char *text, const char *const *overrides, int n_overrides,
+                                 char dir[64], table *t)
+{
+    snprintf(dir, 64, "/tmp/vcsph-test-XXXXXX");
+    assert_non_null(mkdtemp(dir));
+    config cfg;
+    char err[1024];
+    if (config_load_string(&cfg, text, "test case", overrides, n_overrides, err, sizeof err))
+        fail_msg("%s", err);
+    run_options opt = {dir, true};
+    assert_int_equal(simulation_run(&cfg, &opt), RUN_OK);
+    char path[128];
+    snprintf(path, sizeof path, "%s/timeseries.csv", dir);
+    assert_int_equal(table_read(t, path), 0);
+}
+
+#endif
