@@ -118,7 +118,7 @@ static void test_mirrored_state(void **state)
 }
 
 /* Bounce-back reverses only the normal velocity of particles within dr/4 of a wall moving
- * towards it (sec. 2.5). */
+ * towards it (sec. 2.5), the distance taken one step ahead. */
 static void test_bounce_back(void **state)
 {
     (void)state;
@@ -130,12 +130,17 @@ static void test_bounce_back(void **state)
     add(&p, (double[3]){0.02, 0.4, 0.3});  /* beyond dr/4 */
     p.u[0][0] = -1.0;
     p.u[0][1] = -1.0;
-    tank_bounce_back(&t, &p, dr);
+    tank_bounce_back(&t, &p, dr, 0.0);
     assert_true(p.u[0][0] == 1.0);
     assert_true(p.u[1][0] == 2.0);
     assert_true(p.u[0][1] == -1.0);
-    tank_bounce_back(&t, &p, dr); /* moving away now: unchanged */
+    tank_bounce_back(&t, &p, dr, 0.0); /* moving away now: unchanged */
     assert_true(p.u[0][0] == 1.0);
+    /* 0.02 from the wall at 1 m/s: within dr/4 = 0.01 after a step of 0.015 s, not of 0.005 s */
+    tank_bounce_back(&t, &p, dr, 0.005);
+    assert_true(p.u[0][1] == -1.0);
+    tank_bounce_back(&t, &p, dr, 0.015);
+    assert_true(p.u[0][1] == 1.0);
     particles_free(&p);
 }
 

@@ -80,14 +80,16 @@ void tank_mirror_step_fields(const tank *t, particles *p, vec g_eff, double c0)
     }
 }
 
-void tank_bounce_back(const tank *t, particles *p, double dr)
+void tank_bounce_back(const tank *t, particles *p, double dr, double dt)
 {
     double near = 0.25 * dr;
 #pragma omp parallel for schedule(static)
     for (size_t i = 0; i < p->n_fluid; i++) {
         for (int d = 0; d < DIM; d++) {
-            double x = p->x[d][i], u = p->u[d][i];
-            if ((x < near && u < 0.0) || (t->size[d] - x < near && u > 0.0)) p->u[d][i] = -u;
+            double u = p->u[d][i];
+            double ahead = p->x[d][i] + (u + p->shift[d][i]) * dt;
+            if ((ahead < near && u < 0.0) || (t->size[d] - ahead < near && u > 0.0))
+                p->u[d][i] = -u;
         }
     }
 }

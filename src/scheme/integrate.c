@@ -171,7 +171,7 @@ void solver_advance(solver *s, double t_stop)
     s->t = s->t + dt >= t_stop ? t_stop : s->t + dt;
     s->step++;
     s->last_dt = dt;
-    tank_bounce_back(&s->tank, p, s->dv.dr);
+    tank_bounce_back(&s->tank, p, s->dv.dr, dt);
     solver_update_eos(s);
 }
 
