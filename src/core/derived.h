@@ -7,8 +7,8 @@
 #include "core/config.h"
 
 typedef struct {
-    double dr, h;   /* spacing H/N and smoothing length */
-    long n_axis[3]; /* lattice particles along x, y, z (z: 1 in 2D) */
+    double dr, h;      /* spacing H/N and smoothing length */
+    long n_axis[3];    /* lattice particles along x, y, z (z: 1 in 2D) */
     double spacing[3]; /* lattice spacing per axis: dr along y; along x (z) the liquid length
                           (tank width) over a whole number of particles, within dr/(2 n) of dr */
     long n_fluid;
