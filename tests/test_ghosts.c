@@ -83,7 +83,7 @@ static void test_mirrored_state(void **state)
         p.nu_t[i] = 1e-5 * (double)(i + 1);
         p.nu_delta[i] = 2e-5 * (double)(i + 1);
     }
-    tank_mirror_step_fields(&t, &p, g_eff, c0);
+    tank_mirror_step_fields(&p, g_eff, c0);
     for (size_t g = p.n_fluid; g < p.n_total; g++) {
         size_t i = (size_t)p.ghost_source[g - p.n_fluid];
         unsigned walls = p.ghost_walls[g - p.n_fluid];

@@ -44,6 +44,16 @@ static void disorder(solver *s, double frac, uint64_t seed)
         }
 }
 
+/* The block of block_case, disordered, with the geometry and shifting of its first step. */
+static void disordered_block(config *cfg, solver *s, double frac, uint64_t seed)
+{
+    char err[1024];
+    if (config_load_string(cfg, block_case, "test", NULL, 0, err, sizeof err)) fail_msg("%s", err);
+    if (solver_init(s, cfg, err, sizeof err)) fail_msg("%s", err);
+    disorder(s, frac, seed);
+    assert_int_equal(solver_prepare(s, cfg->t_end), 0);
+}
+
 static int deep_inside(const solver *s, size_t i)
 {
     const particles *p = &s->p;
@@ -75,12 +85,8 @@ static void test_shifting_regularises(void **state)
 {
     (void)state;
     config cfg;
-    char err[1024];
-    if (config_load_string(&cfg, block_case, "test", NULL, 0, err, sizeof err)) fail_msg("%s", err);
     solver s;
-    if (solver_init(&s, &cfg, err, sizeof err)) fail_msg("%s", err);
-    disorder(&s, 0.2, 42);
-    assert_int_equal(solver_prepare(&s, cfg.t_end), 0);
+    disordered_block(&cfg, &s, 0.2, 42);
     double before = lambda_spread(&s), tau = s.dt;
     for (int k = 0; k < 40; k++) {
         particles *p = &s.p;
@@ -102,12 +108,8 @@ static void test_no_normal_shifting_at_surface(void **state)
 {
     (void)state;
     config cfg;
-    char err[1024];
-    if (config_load_string(&cfg, block_case, "test", NULL, 0, err, sizeof err)) fail_msg("%s", err);
     solver s;
-    if (solver_init(&s, &cfg, err, sizeof err)) fail_msg("%s", err);
-    disorder(&s, 0.1, 7);
-    assert_int_equal(solver_prepare(&s, cfg.t_end), 0);
+    disordered_block(&cfg, &s, 0.1, 7);
     const particles *p = &s.p;
     size_t checked = 0, moving = 0;
     for (size_t i = 0; i < p->n_fluid; i++) {

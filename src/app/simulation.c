@@ -95,7 +95,7 @@ static void write_series_row(run *r, int with_geometry)
 {
     solver *s = &r->s;
     volume_errors ve;
-    if (with_geometry) volume_compute(&s->p, s->dv.v0 / (double)s->p.n_fluid, s->scratch, &ve);
+    if (with_geometry) volume_compute(&s->p, s->dv.cell_volume, s->scratch, &ve);
     diagnostics dg;
     diagnostics_compute(s, &dg);
     double energy = dg.ekin + dg.epot + dg.eint;
@@ -170,8 +170,8 @@ static int snapshot_fields(solver *s, snapshot_field *f)
     f[n++] = (snapshot_field){"lambda", FIELD_DOUBLE, 1, {p->lambda}};
     f[n++] = (snapshot_field){"surface", FIELD_UINT8, 1, {p->surface}};
     /* the local volume error, computed into scratch just before writing */
-    double cell = s->dv.v0 / (double)p->n_fluid;
-    for (size_t i = 0; i < p->n_fluid; i++) s->scratch[i] = volume_local_error(p, i, cell);
+    for (size_t i = 0; i < p->n_fluid; i++)
+        s->scratch[i] = volume_local_error(p, i, s->dv.cell_volume);
     f[n++] = (snapshot_field){"eps_vi", FIELD_DOUBLE, 1, {s->scratch}};
     f[n] = (snapshot_field){"shifting", FIELD_DOUBLE, DIM, {0}};
     for (int d = 0; d < DIM; d++) f[n].component[d] = p->shift[d];

@@ -36,7 +36,7 @@ int snapshot_volume_dim(const config *cfg, const char *path, const snapshot_info
             status = RUN_FAILED;
         } else {
             volume_errors ve;
-            volume_compute(p, s.dv.v0 / (double)p->n_fluid, s.scratch, &ve);
+            volume_compute(p, s.dv.cell_volume, s.scratch, &ve);
             *eps_v1 = ve.eps_v1;
             if (volume_graphical(p, s.tank.size, s.dv.dr, s.dv.v0, eps_gm, err, err_len))
                 status = RUN_FAILED;

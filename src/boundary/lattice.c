@@ -6,7 +6,7 @@ int lattice_fill(particles *p, const config *cfg, const derived *dv)
 {
     size_t n = (size_t)dv->n_fluid;
     if (particles_reserve(p, n + n / 2 + 64)) return -1;
-    double cell_volume = dv->v0 / (double)n;
+    double cell_volume = dv->cell_volume;
     double surface = cfg->liquid_y0 + cfg->liquid_height;
     double origin[3] = {cfg->liquid_x0, cfg->liquid_y0, 0.0};
     size_t i = 0;

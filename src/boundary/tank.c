@@ -63,9 +63,8 @@ void tank_refresh_ghosts(const tank *t, particles *p, vec g_eff, double rho0, do
     }
 }
 
-void tank_mirror_step_fields(const tank *t, particles *p, vec g_eff, double c0)
+void tank_mirror_step_fields(particles *p, vec g_eff, double c0)
 {
-    (void)t;
     size_t n_fluid = p->n_fluid;
 #pragma omp parallel for schedule(static)
     for (size_t g = n_fluid; g < p->n_total; g++) {

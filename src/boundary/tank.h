@@ -32,7 +32,7 @@ void tank_refresh_ghosts(const tank *t, particles *p, vec g_eff, double rho0, do
  * copied; shifting velocity mirrored (free slip); density gradient = mirror of the source's dynamic
  * part plus the hydrostatic gradient rho g_eff / c0^2, consistent with the hydrostatic continuation
  * above. */
-void tank_mirror_step_fields(const tank *t, particles *p, vec g_eff, double c0);
+void tank_mirror_step_fields(particles *p, vec g_eff, double c0);
 
 /* After a step: particles closer than dr/4 to a wall and moving towards it have their normal
  * velocity reversed (sec. 2.5). The distance is the one the particle would reach after a

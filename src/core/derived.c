@@ -29,6 +29,7 @@ void derived_compute(const config *cfg, const motion *mo, derived *dv)
         dv->v0 *= extent[d];
     }
     dv->n_fluid = dv->n_axis[0] * dv->n_axis[1] * dv->n_axis[2];
+    dv->cell_volume = dv->v0 / (double)dv->n_fluid;
 
     dv->g_max = motion_max_effective_gravity(mo, cfg->gravity, cfg->t_end);
     /* Eq. (6) with U_max the speed of a fall from H under g_max */
@@ -54,13 +55,12 @@ void derived_compute(const config *cfg, const motion *mo, derived *dv)
     dv->d_power = periodic ? dv->d_energy / cfg->period : 0.0;
 }
 
-int derived_check(const config *cfg, const derived *dv, char *err, size_t err_len)
+int derived_check(const derived *dv, char *err, size_t err_len)
 {
     if (dv->c0 > 0.0) return 0;
     snprintf(err, err_len,
              "numerics.sound_speed = auto: 10 sqrt(2 g_max H) is 0 without gravity or tank "
              "motion; give a sound speed > 0 (m/s; Eq. 6: at least 10 times the largest speed)");
-    (void)cfg;
     return 2;
 }
 

@@ -14,6 +14,7 @@ typedef struct {
     long n_fluid;
     double v0;                          /* initial liquid volume L H W = N x the cell volume
                                            (per unit width in 2D) */
+    double cell_volume;                 /* v0 / N: a particle's initial volume, V_i0 (sec. 2.1) */
     double g_max;                       /* largest effective gravity of the motion */
     double c0;                          /* sound speed, given or 10 sqrt(2 g_max H) (Eq. 6) */
     double k_c;                         /* CFL number (Table 1 unless given) */
@@ -26,7 +27,7 @@ typedef struct {
 void derived_compute(const config *cfg, const motion *mo, derived *out);
 /* Whether the derived numbers make a runnable case (a sound speed > 0: `auto` needs gravity
  * or motion). Returns 0, or 2 with a message naming the key. */
-int derived_check(const config *cfg, const derived *dv, char *err, size_t err_len);
+int derived_check(const derived *dv, char *err, size_t err_len);
 /* Prints the derived numbers, one per line, for `vcsph check`. */
 void derived_print(const config *cfg, const derived *dv, FILE *out);
 

@@ -44,7 +44,5 @@ void diagnostics_compute(solver *s, diagnostics *out)
     out->ymax = reduce_max(p->x[1], n);
     out->rho_min = reduce_min(p->rho, n);
     out->rho_max = reduce_max(p->rho, n);
-#pragma omp parallel for schedule(static)
-    for (size_t i = 0; i < n; i++) s->scratch[i] = vec_norm(vec_load(p->u, i));
-    out->umax = reduce_max(s->scratch, n);
+    out->umax = solver_max_speed(s);
 }

@@ -4,6 +4,7 @@
 #define VCSPH_VOLUME_H
 
 #include "core/particles.h"
+#include "diag/freesurface.h"
 
 typedef struct {
     double eps_v1, eps_v2, eps_v3;
@@ -28,7 +29,7 @@ int volume_graphical(const particles *p, const double size[DIM], double dr, doub
  * (theory §9). */
 static inline double volume_local_error(const particles *p, size_t i, double cell_volume)
 {
-    if (p->surface[i] != 0) return 0.0;
+    if (p->surface[i] != SURFACE_INTERIOR) return 0.0;
     return 1.0 / (p->kernel_sum[i] * cell_volume) - 1.0;
 }
 

@@ -56,7 +56,7 @@ static void geometry_and_gradients(const physics_params *pp, const tank *t, part
             pair pr;
             if (!pair_of(k, p->x, xi, row, n, &pr)) continue;
             size_t j = pr.j;
-            neighbour_sums_add(&s, &pr, kernel_w(k, sqrt(pr.r2)), p->vol[j], p->rho[j] - rhoi,
+            neighbour_sums_add(&s, &pr, kernel_w(k, pr.r), p->vol[j], p->rho[j] - rhoi,
                                vec_sub(vec_load(p->u_wall, j), ui));
         }
         double lambda = mat_min_eigenvalue(&s.l);
@@ -106,8 +106,8 @@ static void shifting_velocity(const physics_params *pp, particles *p, const neig
         for (int32_t n = 0; n < nl->count[i]; n++) {
             pair pr;
             if (!pair_of(k, p->x, xi, row, n, &pr)) continue;
-            sum = vec_add(sum, shifting_pair(kernel_w(k, sqrt(pr.r2)), pp->w_dr, pr.r_ji, pr.f,
-                                             p->vol[pr.j]));
+            sum = vec_add(sum,
+                          shifting_pair(kernel_w(k, pr.r), pp->w_dr, pr.r_ji, pr.f, p->vol[pr.j]));
             double rel2 = vec_norm2(vec_sub(vec_load(p->u, pr.j), ui));
             if (rel2 > max_relative2) max_relative2 = rel2;
         }
@@ -155,11 +155,11 @@ void fields_geometry(const physics_params *pp, const tank *t, particles *p,
     freesurface_detect(&pp->k, pp->dr, pp->normal_reference, p, nl);
 }
 
-void fields_frozen_terms(const physics_params *pp, const tank *t, particles *p,
-                         const neighbour_list *nl, vec g_eff, bool variable_mass)
+void fields_frozen_terms(const physics_params *pp, particles *p, const neighbour_list *nl,
+                         vec g_eff, bool variable_mass)
 {
     if (pp->shifting) shifting_velocity(pp, p, nl);
-    tank_mirror_step_fields(t, p, g_eff, pp->c0);
+    tank_mirror_step_fields(p, g_eff, pp->c0);
     if (pp->c_delta > 0.0) {
         if (variable_mass)
             diffusion(pp, p, nl, true);

@@ -21,7 +21,7 @@ static double time_step(const solver *s)
     return dt;
 }
 
-static double max_speed(solver *s)
+double solver_max_speed(solver *s)
 {
     particles *p = &s->p;
 #pragma omp parallel for schedule(static)
@@ -35,7 +35,7 @@ static double max_speed(solver *s)
 static int build_neighbours(solver *s, double dt)
 {
     particles *p = &s->p;
-    double bound = dt * (max_speed(s) + dt * s->max_acc);
+    double bound = dt * (solver_max_speed(s) + dt * s->max_acc);
     s->skin = 3.0 * bound > 0.05 * s->dv.dr ? 3.0 * bound : 0.05 * s->dv.dr;
     double cutoff = 2.0 * s->dv.h + s->skin;
     double lo[DIM], hi[DIM];
@@ -121,14 +121,14 @@ int solver_prepare(solver *s, double t_stop)
     if (s->cfg->scheme == SCHEME_DELTA_PLUS_ALE) {
         /* eps_V1 of this state decides eta for the step (theory §8) */
         volume_errors ve;
-        volume_compute(&s->p, s->dv.v0 / (double)s->p.n_fluid, s->scratch, &ve);
+        volume_compute(&s->p, s->dv.cell_volume, s->scratch, &ve);
         s->eta_switched =
             control_eta_switch(s, ve.eps_v1, s->eta_switch_detail, sizeof s->eta_switch_detail);
     }
     control_edbc(s);
     if (s->n_edbc > 0) /* the ghosts of corrected particles carry the corrected state */
         tank_refresh_ghosts(&s->tank, &s->p, g_eff, s->pp.rho0, s->pp.c0);
-    fields_frozen_terms(&s->pp, &s->tank, &s->p, &s->nl, g_eff, s->eta);
+    fields_frozen_terms(&s->pp, &s->p, &s->nl, g_eff, s->eta);
     return 0;
 }
 

@@ -11,7 +11,7 @@
 typedef struct {
     size_t j;
     vec r_ji;
-    double r2, f;
+    double r2, r, f; /* |r_ji|^2, |r_ji|, F_ij */
 } pair;
 
 static inline const int32_t *neighbour_row(const neighbour_list *nl, size_t i)
@@ -28,7 +28,8 @@ static inline bool pair_of(const kernel *k, double *const x[DIM], vec xi, const 
     pr->r_ji = vec_sub(vec_load(x, pr->j), xi);
     pr->r2 = vec_norm2(pr->r_ji);
     if (pr->r2 >= k->support2) return false;
-    pr->f = kernel_f(k, sqrt(pr->r2));
+    pr->r = sqrt(pr->r2);
+    pr->f = kernel_f(k, pr->r);
     return true;
 }
 

@@ -29,16 +29,16 @@ static inline void rhs_particle(const physics_params *pp, const particles *p,
         size_t j = pr.j;
         double vj = p->vol[j];
         vec u_ji = vec_sub(vec_load(p->u, j), ui);
+        vec transport_ji = u_ji; /* (u + du)_ji: the particles move with u + du */
         if (ale) {
             vec duj = vec_load(p->shift, j);
-            u_ji = vec_add(u_ji, vec_sub(duj, dui)); /* (u + du)_ji */
+            transport_ji = vec_add(u_ji, vec_sub(duj, dui));
             double flux = ale_flux_pair(rhoi, dui, p->rho[j], duj, pr.r_ji, pr.f);
             drho += flux * vj;
             if (variable_mass && j < p->n_fluid) mass_flux += flux * vi * vj;
-            vec u_only = vec_sub(vec_load(p->u, j), ui);
-            force = vec_add(force, ale_momentum_pair(p->rho[j], u_only, duj, pr.r_ji, pr.f, vj));
+            force = vec_add(force, ale_momentum_pair(p->rho[j], u_ji, duj, pr.r_ji, pr.f, vj));
         }
-        drho += continuity_pair(rhoi, u_ji, pr.r_ji, pr.f, vj);
+        drho += continuity_pair(rhoi, transport_ji, pr.r_ji, pr.f, vj);
         force = vec_add(force, pressure_pair(pi, p->p[j], pr.r_ji, pr.f, vj));
         double mu_eff = mu;
         if (les) mu_eff += pp->rho0 * harmonic_mean_capped(nuti, p->nu_t[j], pp->nu_t_cap);

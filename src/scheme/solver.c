@@ -62,7 +62,7 @@ int solver_init(solver *s, const config *cfg, char *err, size_t err_len)
     int status = motion_init(&s->mo, cfg, err, err_len);
     if (status) return status;
     derived_compute(cfg, &s->mo, &s->dv);
-    if ((status = derived_check(cfg, &s->dv, err, err_len))) {
+    if ((status = derived_check(&s->dv, err, err_len))) {
         motion_free(&s->mo);
         return status;
     }

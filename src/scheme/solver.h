@@ -53,6 +53,7 @@ typedef struct {
 #define solver_advance    DIM_NAME(solver_advance)
 #define solver_g_eff      DIM_NAME(solver_g_eff)
 #define solver_update_eos DIM_NAME(solver_update_eos)
+#define solver_max_speed  DIM_NAME(solver_max_speed)
 #define lattice_fill      DIM_NAME(lattice_fill)
 
 /* Particles on a lattice filling the liquid box with the hydrostatic state (sec. 2.1).
@@ -70,6 +71,8 @@ void solver_advance(solver *s, double t_stop);
 int solver_step(solver *s, double t_stop);
 /* g_eff = g - a_tank(t) (theory §6) */
 vec solver_g_eff(const solver *s, double t);
+/* Largest |u| of the fluid (uses s->scratch). */
+double solver_max_speed(solver *s);
 /* p and V = m/rho of the fluid from rho, m (the linear EOS). */
 void solver_update_eos(solver *s);
 
