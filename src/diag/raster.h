@@ -1,21 +1,23 @@
-/* raster: the graphical method of the paper, Eq. (15) (sec. 3.2; theory §9): the particles
- * drawn as discs (balls) on a grid of pixels (voxels) of side dr / k, the covered pixels
- * counted. Dimension-free at run time (dim = 2 or 3); docs/graphical-method.md has the
- * rules compared and the figures behind the defaults. */
+/* raster: the graphical method of the paper, Eq. (15) (sec. 3.2; theory §9): the liquid
+ * drawn on a grid of pixels (voxels) of side dr / k and the covered pixels counted.
+ * Dimension-free at run time (dim = 2 or 3); docs/graphical-method.md has the rules compared
+ * and the figures behind the defaults. */
 #ifndef VCSPH_RASTER_H
 #define VCSPH_RASTER_H
 
 #include <stddef.h>
 
 typedef struct {
-    int k;          /* pixels per particle spacing: pixel side dr / k (theory §9: k >= 4) */
-    double radius;  /* disc (ball) radius / dr */
-    double closing; /* radius of the morphological closing / dr; 0: none (a plain disc rule) */
+    int k;            /* pixels per particle spacing: pixel side dr / k (theory §9: k >= 4) */
+    double radius;    /* disc (ball) radius / dr: every pixel this close to a particle is
+                         liquid; 0: no discs */
+    double smoothing; /* smoothing length / dr of the colour function C = sum_j W_j dr^n;
+                         every pixel with C >= 1/2 is liquid; 0: no colour function */
 } raster_params;
 
-/* The chosen rule: discs of radius dr/2 (a lattice cell's own extent, nothing spills past a
- * free surface), closed with a disc of radius c = 2 dr; k = 8 in 2D, 4 in 3D
- * (docs/graphical-method.md). */
+/* The chosen rule: the colour function of a Wendland C2 kernel of smoothing length dr,
+ * thresholded at 1/2, together with discs of radius dr/2 (so that a lone particle keeps its
+ * cell's footprint); k = 8 in 2D, 4 in 3D (docs/graphical-method.md). */
 raster_params raster_params_default(int dim);
 
 /* Covered volume (m^n; m^2 per unit width in 2D) of the n particles at positions
