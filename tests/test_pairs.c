@@ -13,6 +13,9 @@
 #include <stddef.h>
 #include <cmocka.h>
 
+#include <math.h>
+#include <stdio.h>
+
 #include "check.h"
 
 static vec along_x(double a)
@@ -78,6 +81,45 @@ static void test_diffusion(void **state)
     /* 2 * 0.01 * 2 * 3e4 * 4e-4 = 0.48, towards the higher neighbour */
     assert_close(d, 0.48, 1e-12);
     assert_close(diffusion_coefficient(6.0, 0.04, 2.0), (6.0 * 0.04) * (6.0 * 0.04) * 2.0, 1e-15);
+}
+
+/* The frozen D^rho applied as one Euler step of dt (paper sec. 2.4) to a clump of m = 7
+ * particles a hair apart, the SAP breakdown of docs/choices.md: every pair at the same F (the
+ * kernel's peak), densities alternating 1000 +- 10. Its rate a dt = (m - 1) 0.35 = 2.1 makes
+ * the bare step amplify the spread (the clump's eigenvalue m w dt = 2.45 > 2); with
+ * diffusion_stability_factor the spread shrinks, as a diffusion must. */
+static double clump_spread_after_step(int limited)
+{
+    enum { M = 7 };
+    const double delta = 0.02, f = 1.0e7, vol = 1.0e-6, dt = 0.35 / (2.0 * delta * f * vol);
+    double rho[M], next[M];
+    for (int i = 0; i < M; i++) rho[i] = 1000.0 + (i % 2 ? 10.0 : -10.0);
+    vec zero = vec_zero(), r = along_x(1e-6);
+    double spread = 0.0;
+    for (int i = 0; i < M; i++) {
+        double d = 0.0, rate = 0.0;
+        for (int j = 0; j < M; j++) {
+            if (j == i) continue;
+            d += diffusion_rho_pair(delta, rho[i], rho[j], zero, zero, r, f, vol);
+            rate += diffusion_rate_pair(delta, f, vol);
+        }
+        next[i] = rho[i] + dt * d * (limited ? diffusion_stability_factor(rate, dt) : 1.0);
+    }
+    double mean = 0.0;
+    for (int i = 0; i < M; i++) mean += next[i] / M;
+    for (int i = 0; i < M; i++) spread = fmax(spread, fabs(next[i] - mean));
+    return spread;
+}
+
+static void test_diffusion_stability(void **state)
+{
+    (void)state;
+    double bare = clump_spread_after_step(0), limited = clump_spread_after_step(1);
+    printf("clump of 7, spread 10 -> %.3f bare, %.3f limited\n", bare, limited);
+    assert_true(bare > 10.0);
+    assert_true(limited < 10.0);
+    assert_close(diffusion_stability_factor(2.0, 0.25), 1.0, 0.0); /* a dt = 0.5: untouched */
+    assert_close(diffusion_stability_factor(4.0, 0.5), 0.5, 1e-15);
 }
 
 static void test_harmonic_mean_and_caps(void **state)
@@ -179,6 +221,7 @@ int main(void)
         cmocka_unit_test(test_pressure),
         cmocka_unit_test(test_viscosity),
         cmocka_unit_test(test_diffusion),
+        cmocka_unit_test(test_diffusion_stability),
         cmocka_unit_test(test_harmonic_mean_and_caps),
         cmocka_unit_test(test_eddy_viscosity),
         cmocka_unit_test(test_eos),

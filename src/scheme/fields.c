@@ -124,14 +124,14 @@ static void shifting_velocity(const physics_params *pp, particles *p, const neig
 /* D^rho and D^m of Eq. (5), frozen over the step. The mass diffusion runs between fluid
  * particles only: no mass crosses a wall, and the total mass stays exact. */
 static void diffusion(const physics_params *pp, particles *p, const neighbour_list *nl,
-                      const bool mass)
+                      const bool mass, double dt)
 {
     const kernel *k = &pp->k;
 #pragma omp parallel for schedule(static)
     for (size_t i = 0; i < p->n_fluid; i++) {
         vec xi = vec_load(p->x, i), gi = vec_load(p->grad_rho, i);
         double rhoi = p->rho[i], nui = p->nu_delta[i], mi = p->m[i], vi = p->vol[i];
-        double sum_rho = 0.0, sum_m = 0.0;
+        double sum_rho = 0.0, sum_m = 0.0, rate = 0.0;
         const int32_t *row = neighbour_row(nl, i);
         for (int32_t n = 0; n < nl->count[i]; n++) {
             pair pr;
@@ -140,10 +140,11 @@ static void diffusion(const physics_params *pp, particles *p, const neighbour_li
             double delta_ij = harmonic_mean_capped(nui, p->nu_delta[j], pp->delta_cap);
             sum_rho += diffusion_rho_pair(delta_ij, rhoi, p->rho[j], gi, vec_load(p->grad_rho, j),
                                           pr.r_ji, pr.f, p->vol[j]);
+            rate += diffusion_rate_pair(delta_ij, pr.f, p->vol[j]);
             if (mass && j < p->n_fluid)
                 sum_m += mass_diffusion_pair(pp->delta_c0_h, mi, p->m[j], pr.f, vi, p->vol[j]);
         }
-        p->diff_rho[i] = sum_rho;
+        p->diff_rho[i] = sum_rho * diffusion_stability_factor(rate, dt);
         p->diff_m[i] = sum_m;
     }
 }
@@ -156,15 +157,15 @@ void fields_geometry(const physics_params *pp, const tank *t, particles *p,
 }
 
 void fields_frozen_terms(const physics_params *pp, particles *p, const neighbour_list *nl,
-                         vec g_eff, bool variable_mass)
+                         vec g_eff, bool variable_mass, double dt)
 {
     if (pp->shifting) shifting_velocity(pp, p, nl);
     tank_mirror_step_fields(p, g_eff, pp->c0);
     if (pp->c_delta > 0.0) {
         if (variable_mass)
-            diffusion(pp, p, nl, true);
+            diffusion(pp, p, nl, true, dt);
         else
-            diffusion(pp, p, nl, false);
+            diffusion(pp, p, nl, false, dt);
     } else {
         for (size_t i = 0; i < p->n_fluid; i++) p->diff_rho[i] = p->diff_m[i] = 0.0;
     }

@@ -25,6 +25,6 @@ void fields_geometry(const physics_params *pp, const tank *t, particles *p,
  * the shifting velocity of Eq. (7) (when the scheme shifts), the ghosts' copies of the
  * per-step fields, D^rho and, with variable masses, D^m of Eq. (5). */
 void fields_frozen_terms(const physics_params *pp, particles *p, const neighbour_list *nl,
-                         vec g_eff, bool variable_mass);
+                         vec g_eff, bool variable_mass, double dt);
 
 #endif

@@ -128,7 +128,7 @@ int solver_prepare(solver *s, double t_stop)
     control_edbc(s);
     if (s->n_edbc > 0) /* the ghosts of corrected particles carry the corrected state */
         tank_refresh_ghosts(&s->tank, &s->p, g_eff, s->pp.rho0, s->pp.c0);
-    fields_frozen_terms(&s->pp, &s->p, &s->nl, g_eff, s->eta);
+    fields_frozen_terms(&s->pp, &s->p, &s->nl, g_eff, s->eta, s->dt);
     return 0;
 }
 
