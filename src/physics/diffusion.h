@@ -4,6 +4,13 @@
 
 #include "core/vec.h"
 
+/* The rate at which D^rho pulls rho_i towards its neighbours: the coefficient of -rho_i in the
+ * pair term below, 2 delta_ij F_ij V_j for one pair. */
+static inline double diffusion_rate_pair(double delta_ij, double f_ij, double vol_j)
+{
+    return 2.0 * delta_ij * f_ij * vol_j;
+}
+
 /* 2 delta_ij [(rho_j - rho_i) - 1/2 (<grad rho>^L_i + <grad rho>^L_j) . r_ji] F_ij V_j:
  * the renormalized gradients remove the linear part of the density field, so a hydrostatic
  * column is not diffused. */
@@ -11,14 +18,7 @@ static inline double diffusion_rho_pair(double delta_ij, double rho_i, double rh
                                         vec grad_j, vec r_ji, double f_ij, double vol_j)
 {
     double linear = 0.5 * vec_dot(vec_add(grad_i, grad_j), r_ji);
-    return 2.0 * delta_ij * ((rho_j - rho_i) - linear) * f_ij * vol_j;
-}
-
-/* The rate at which D^rho pulls rho_i towards its neighbours: the coefficient of -rho_i in the
- * sum above, 2 delta_ij F_ij V_j for one pair. */
-static inline double diffusion_rate_pair(double delta_ij, double f_ij, double vol_j)
-{
-    return 2.0 * delta_ij * f_ij * vol_j;
+    return diffusion_rate_pair(delta_ij, f_ij, vol_j) * ((rho_j - rho_i) - linear);
 }
 
 /* D^rho is frozen over the RK stages (paper sec. 2.4), so a step applies it as one explicit

@@ -23,7 +23,8 @@ void fields_geometry(const physics_params *pp, const tank *t, particles *p,
 
 /* The terms frozen over the RK stages (sec. 2.4), after EdBC has corrected the densities:
  * the shifting velocity of Eq. (7) (when the scheme shifts), the ghosts' copies of the
- * per-step fields, D^rho and, with variable masses, D^m of Eq. (5). */
+ * per-step fields, D^rho and, with variable masses, D^m of Eq. (5). dt, the step they are
+ * frozen over, bounds each particle's D^rho so that the step is stable (diffusion.h). */
 void fields_frozen_terms(const physics_params *pp, particles *p, const neighbour_list *nl,
                          vec g_eff, bool variable_mass, double dt);
 
