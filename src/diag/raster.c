@@ -70,8 +70,36 @@ static inline void pixel_range(double lo, double hi, double h, int n, int *first
     *last = b >= n ? n - 1 : (b < -1.0 ? -1 : (int)b);
 }
 
-/* The particles and, for those within `reach` of a wall, their mirror images about it (about
- * two or three walls near an edge or a corner): sources s[0..dim)[0..*count). */
+/* Particle i and, if it lies within `reach` of a wall, its mirror images about that wall
+ * (about two or three walls near an edge or a corner), into img[0..count); returns count. */
+static inline int particle_images(const grid *g, double *const x[3], size_t i, double reach,
+                                  double img[8][3])
+{
+    double wall[3] = {0.0, 0.0, 0.0};
+    int near = 0; /* bit d: near the wall of axis d at wall[d] */
+    for (int d = 0; d < g->dim; d++) {
+        double size = g->nn[d] * g->h[d];
+        if (x[d][i] < reach) {
+            near |= 1 << d;
+            wall[d] = 0.0;
+        } else if (x[d][i] > size - reach) {
+            near |= 1 << d;
+            wall[d] = size;
+        }
+    }
+    int count = 0;
+    for (int mirror = 0; mirror < (1 << g->dim); mirror++) {
+        if (mirror & ~near) continue;
+        for (int d = 0; d < 3; d++) {
+            double c = d < g->dim ? x[d][i] : 0.0;
+            img[count][d] = (mirror >> d & 1) ? 2.0 * wall[d] - c : c;
+        }
+        count++;
+    }
+    return count;
+}
+
+/* The sources of the colour function: every particle and its images, s[0..3)[0..count). */
 typedef struct {
     double *x[3];
     size_t count;
@@ -84,42 +112,19 @@ static void sources_free(sources *s)
 
 static int sources_make(const grid *g, size_t n, double *const x[3], double reach, sources *s)
 {
-    size_t cap = n ? n : 1;
-    for (int d = 0; d < 3; d++) s->x[d] = NULL;
+    double img[8][3];
     s->count = 0;
-    /* first pass counts the images */
-    for (int pass = 0; pass < 2; pass++) {
-        if (pass == 1)
-            for (int d = 0; d < 3; d++)
-                if (!(s->x[d] = malloc(cap * sizeof(double)))) {
-                    sources_free(s);
-                    return -1;
-                }
-        size_t m = 0;
-        for (size_t i = 0; i < n; i++) {
-            double wall[3] = {0.0, 0.0, 0.0};
-            int near = 0; /* bit d: near a wall of axis d, at wall[d] */
-            for (int d = 0; d < g->dim; d++) {
-                double size = g->nn[d] * g->h[d];
-                if (x[d][i] < reach) {
-                    near |= 1 << d;
-                    wall[d] = 0.0;
-                } else if (x[d][i] > size - reach) {
-                    near |= 1 << d;
-                    wall[d] = size;
-                }
-            }
-            for (int mirror = 0; mirror < (1 << g->dim); mirror++) {
-                if (mirror & ~near) continue;
-                if (pass == 1)
-                    for (int d = 0; d < 3; d++)
-                        s->x[d][m] = (mirror >> d & 1) ? 2.0 * wall[d] - x[d][i]
-                                                       : (d < g->dim ? x[d][i] : 0.0);
-                m++;
-            }
-        }
-        if (pass == 0) cap = m ? m : 1;
-        s->count = m;
+    for (size_t i = 0; i < n; i++) s->count += (size_t)particle_images(g, x, i, reach, img);
+    for (int d = 0; d < 3; d++) s->x[d] = malloc((s->count ? s->count : 1) * sizeof(double));
+    if (!s->x[0] || !s->x[1] || !s->x[2]) {
+        sources_free(s);
+        return -1;
+    }
+    size_t m = 0;
+    for (size_t i = 0; i < n; i++) {
+        int k = particle_images(g, x, i, reach, img);
+        for (int c = 0; c < k; c++, m++)
+            for (int d = 0; d < 3; d++) s->x[d][m] = img[c][d];
     }
     return 0;
 }
