@@ -118,7 +118,7 @@ static void test_mirrored_state(void **state)
 }
 
 /* Bounce-back reverses only the normal velocity of particles within dr/4 of a wall moving
- * towards it (sec. 2.5), the distance taken one step ahead. */
+ * towards it (sec. 2.5), the distance taken one step ahead at the transport velocity u + du. */
 static void test_bounce_back(void **state)
 {
     (void)state;
@@ -130,11 +130,11 @@ static void test_bounce_back(void **state)
     add(&p, (double[3]){0.02, 0.4, 0.3});  /* beyond dr/4 */
     p.u[0][0] = -1.0;
     p.u[0][1] = -1.0;
-    tank_bounce_back(&t, &p, dr, 0.0);
+    assert_int_equal(tank_bounce_back(&t, &p, dr, 0.0), 1);
     assert_true(p.u[0][0] == 1.0);
     assert_true(p.u[1][0] == 2.0);
     assert_true(p.u[0][1] == -1.0);
-    tank_bounce_back(&t, &p, dr, 0.0); /* moving away now: unchanged */
+    assert_int_equal(tank_bounce_back(&t, &p, dr, 0.0), 0); /* moving away now: unchanged */
     assert_true(p.u[0][0] == 1.0);
     /* 0.02 from the wall at 1 m/s: within dr/4 = 0.01 after a step of 0.015 s, not of 0.005 s */
     tank_bounce_back(&t, &p, dr, 0.005);
@@ -144,12 +144,34 @@ static void test_bounce_back(void **state)
     particles_free(&p);
 }
 
+/* With ALE the particle moves with u + du: a shifting velocity that carries it into the wall
+ * is reversed even when u takes it away, and u, already pointing away, is kept. */
+static void test_bounce_back_shifting(void **state)
+{
+    (void)state;
+    particles p;
+    particles_init(&p, 8);
+    tank t = make_tank();
+    double dr = 0.04;
+    add(&p, (double[3]){0.3, 0.795, 0.3}); /* within dr/4 of the roof y = 0.8 */
+    p.u[1][0] = -0.1;
+    p.shift[1][0] = 0.3;
+    p.shift[0][0] = 0.2;
+    assert_int_equal(tank_bounce_back(&t, &p, dr, 0.0), 1);
+    assert_true(p.u[1][0] == -0.1);
+    assert_true(p.shift[1][0] == -0.3);
+    assert_true(p.shift[0][0] == 0.2); /* tangential: kept */
+    assert_int_equal(tank_bounce_back(&t, &p, dr, 0.0), 0);
+    particles_free(&p);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_counts),
         cmocka_unit_test(test_mirrored_state),
         cmocka_unit_test(test_bounce_back),
+        cmocka_unit_test(test_bounce_back_shifting),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

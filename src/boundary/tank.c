@@ -79,16 +79,31 @@ void tank_mirror_step_fields(particles *p, vec g_eff, double c0)
     }
 }
 
-void tank_bounce_back(const tank *t, particles *p, double dr, double dt)
+/* Reverses v when it points towards the wall on the `side` (-1: low wall, +1: high wall). */
+static inline double away_from_wall(double v, int side)
+{
+    return v * side > 0.0 ? -v : v;
+}
+
+size_t tank_bounce_back(const tank *t, particles *p, double dr, double dt)
 {
     double near = 0.25 * dr;
-#pragma omp parallel for schedule(static)
+    size_t bounced = 0;
+#pragma omp parallel for schedule(static) reduction(+ : bounced)
     for (size_t i = 0; i < p->n_fluid; i++) {
+        int hit = 0;
         for (int d = 0; d < DIM; d++) {
-            double u = p->u[d][i];
-            double ahead = p->x[d][i] + (u + p->shift[d][i]) * dt;
-            if ((ahead < near && u < 0.0) || (t->size[d] - ahead < near && u > 0.0))
-                p->u[d][i] = -u;
+            double transport = p->u[d][i] + p->shift[d][i];
+            double ahead = p->x[d][i] + transport * dt;
+            int side = ahead < near && transport < 0.0             ? -1
+                       : t->size[d] - ahead < near && transport > 0.0 ? 1
+                                                                      : 0;
+            if (!side) continue;
+            p->u[d][i] = away_from_wall(p->u[d][i], side);
+            p->shift[d][i] = away_from_wall(p->shift[d][i], side);
+            hit = 1;
         }
+        bounced += (size_t)hit;
     }
+    return bounced;
 }

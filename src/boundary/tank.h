@@ -34,11 +34,13 @@ void tank_refresh_ghosts(const tank *t, particles *p, vec g_eff, double rho0, do
  * above. */
 void tank_mirror_step_fields(particles *p, vec g_eff, double c0);
 
-/* After a step: particles closer than dr/4 to a wall and moving towards it have their normal
- * velocity reversed (sec. 2.5). The distance is the one the particle would reach after a
- * further step of `dt` at its transport velocity u + du: during a roof impact a particle
- * moves half a spacing per step, and the plain test lets it cross the wall first. */
-void tank_bounce_back(const tank *t, particles *p, double dr, double dt);
+/* Bounce-back (sec. 2.5), at the start of a step once its shifting velocity du is known:
+ * a particle that its transport velocity u + du takes closer than dr/4 to a wall within the
+ * step `dt` (or past it) has the normal components of u and du that point at the wall
+ * reversed, tangential ones kept. Looking a step ahead matters: during a roof impact a
+ * particle moves half a spacing per step. Reversing u alone fails with ALE, where du may
+ * carry a particle into the wall that u takes away from it. Returns the particles bounced. */
+size_t tank_bounce_back(const tank *t, particles *p, double dr, double dt);
 
 /* Distance to the nearest wall plane (sec. 2.5) and its axis. */
 static inline double tank_wall_distance(const tank *t, vec x, int *axis)

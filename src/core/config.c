@@ -179,6 +179,8 @@ static const key_spec keys[] = {
         "auto or a speed > 0 (m/s)"),
     KEY("numerics", "cfl", KIND_REAL_AUTO, 0, "auto", cfl, LEFT_OPEN(0.0, 2.0), NULL,
         "auto or a number in (0, 2]"),
+    KEY("numerics", "density_bound", KIND_REAL, 0, "0.2", density_bound, OPEN(0.0, 1.0), NULL,
+        "a fraction in (0, 1): a density outside rho0 (1 +- bound) is a breakdown"),
 
     KEY("probes", "gauges", KIND_GAUGES, 0, "", gauges, ANY, NULL,
         "x positions (m) inside the tank, separated by commas or spaces"),

@@ -50,6 +50,7 @@ typedef struct {
     double h_over_dr;
     double sound_speed; /* 0 = auto */
     double cfl;         /* 0 = auto (Table 1) */
+    double density_bound; /* breakdown when a density leaves rho0 (1 +- this) */
     /* [probes] */
     int n_gauges;
     double gauges[CONFIG_PROBES_MAX];

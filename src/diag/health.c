@@ -13,9 +13,8 @@ static verdict particle_verdict(const solver *s, size_t i)
         if (!isfinite(p->x[d][i]) || !isfinite(p->u[d][i])) return NOT_FINITE;
     if (!isfinite(p->rho[i]) || !isfinite(p->m[i])) return NOT_FINITE;
     if (!tank_contains(&s->tank, vec_load(p->x, i))) return OUTSIDE;
-    double rho0 = s->pp.rho0;
-    if (p->rho[i] < rho0 * (1.0 - HEALTH_DENSITY_BOUND) ||
-        p->rho[i] > rho0 * (1.0 + HEALTH_DENSITY_BOUND))
+    double rho0 = s->pp.rho0, bound = s->cfg->density_bound;
+    if (p->rho[i] < rho0 * (1.0 - bound) || p->rho[i] > rho0 * (1.0 + bound))
         return DENSITY;
     return SOUND;
 }
@@ -44,8 +43,9 @@ int health_check(const solver *s, char *msg, size_t msg_len)
         break;
     }
     case DENSITY:
-        snprintf(rest, room, "has density %.6g kg/m^3, outside rho0 (1 +- %.1f)", p->rho[i],
-                 HEALTH_DENSITY_BOUND);
+        snprintf(rest, room,
+                 "has density %.6g kg/m^3, outside rho0 (1 +- %g) (numerics.density_bound)",
+                 p->rho[i], s->cfg->density_bound);
         break;
     case SOUND: break;
     }

@@ -1,11 +1,9 @@
 /* health: detection of a numerical breakdown (design §2): a NaN, a particle outside the tank,
- * or a density outside rho0 (1 +- 0.2). */
+ * or a density outside rho0 (1 +- numerics.density_bound), 0.2 unless the case says. */
 #ifndef VCSPH_HEALTH_H
 #define VCSPH_HEALTH_H
 
 #include "scheme/solver.h"
-
-#define HEALTH_DENSITY_BOUND 0.2
 
 #define health_check DIM_NAME(health_check)
 

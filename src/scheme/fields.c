@@ -95,7 +95,7 @@ static void geometry_and_gradients(const physics_params *pp, const tank *t, part
 /* Eq. (7): du*_i = -xi h U_max sum_j [1 + R (W_ij/W(dr))^4] grad_i W_ij V_j, limited, then
  * made tangential in S_F and switched off where lambda < 0.4 (drops and jets: no reliable
  * normal; theory §4, inferred from Sun et al. 2017). */
-static void shifting_velocity(const physics_params *pp, particles *p, const neighbour_list *nl)
+void fields_shifting(const physics_params *pp, particles *p, const neighbour_list *nl)
 {
     const kernel *k = &pp->k;
 #pragma omp parallel for schedule(static)
@@ -159,7 +159,6 @@ void fields_geometry(const physics_params *pp, const tank *t, particles *p,
 void fields_frozen_terms(const physics_params *pp, particles *p, const neighbour_list *nl,
                          vec g_eff, bool variable_mass, double dt)
 {
-    if (pp->shifting) shifting_velocity(pp, p, nl);
     tank_mirror_step_fields(p, g_eff, pp->c0);
     if (pp->c_delta > 0.0) {
         if (variable_mass)

@@ -10,6 +10,7 @@
 #include "scheme/physics_params.h"
 
 #define fields_geometry     DIM_NAME(fields_geometry)
+#define fields_shifting     DIM_NAME(fields_shifting)
 #define fields_frozen_terms DIM_NAME(fields_frozen_terms)
 
 /* Lambda below which a particle gets no shifting (theory §4). */
@@ -21,9 +22,13 @@
 void fields_geometry(const physics_params *pp, const tank *t, particles *p,
                      const neighbour_list *nl);
 
-/* The terms frozen over the RK stages (sec. 2.4), after EdBC has corrected the densities:
- * the shifting velocity of Eq. (7) (when the scheme shifts), the ghosts' copies of the
- * per-step fields, D^rho and, with variable masses, D^m of Eq. (5). dt, the step they are
+/* The shifting velocity du of Eq. (7), frozen over the RK stages (sec. 2.4), for the fluid;
+ * computed after EdBC has corrected the densities, since the volumes weigh it. Call only
+ * when the scheme shifts (pp->shifting). */
+void fields_shifting(const physics_params *pp, particles *p, const neighbour_list *nl);
+
+/* The other terms frozen over the RK stages, after the shifting velocity and bounce-back:
+ * the ghosts' copies of the per-step fields, D^rho and, with variable masses, D^m of Eq. (5). dt, the step they are
  * frozen over, bounds each particle's D^rho so that the step is stable (diffusion.h). */
 void fields_frozen_terms(const physics_params *pp, particles *p, const neighbour_list *nl,
                          vec g_eff, bool variable_mass, double dt);

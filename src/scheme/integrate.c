@@ -128,6 +128,9 @@ int solver_prepare(solver *s, double t_stop)
     control_edbc(s);
     if (s->n_edbc > 0) /* the ghosts of corrected particles carry the corrected state */
         tank_refresh_ghosts(&s->tank, &s->p, g_eff, s->pp.rho0, s->pp.c0);
+    if (s->pp.shifting) fields_shifting(&s->pp, &s->p, &s->nl);
+    if (tank_bounce_back(&s->tank, &s->p, s->dv.dr, dt) > 0) /* ghosts of reversed velocities */
+        tank_refresh_ghosts(&s->tank, &s->p, g_eff, s->pp.rho0, s->pp.c0);
     fields_frozen_terms(&s->pp, &s->p, &s->nl, g_eff, s->eta, s->dt);
     return 0;
 }
@@ -171,7 +174,6 @@ void solver_advance(solver *s, double t_stop)
     s->t = s->t + dt >= t_stop ? t_stop : s->t + dt;
     s->step++;
     s->last_dt = dt;
-    tank_bounce_back(&s->tank, p, s->dv.dr, dt);
     solver_update_eos(s);
 }
 

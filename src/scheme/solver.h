@@ -1,5 +1,5 @@
 /* solver: the state of a run and one time step (design §2): neighbours and ghosts, the
- * frozen per-step fields, four RK4 stages, bounce-back. */
+ * frozen per-step fields and bounce-back, four RK4 stages. */
 #ifndef VCSPH_SOLVER_H
 #define VCSPH_SOLVER_H
 
@@ -61,11 +61,11 @@ typedef struct {
 int solver_init(solver *s, const config *cfg, char *err, size_t err_len);
 void solver_free(solver *s);
 /* Sets up the step from the current state: its size min(Eq. (8), t_stop - t), the fluid
- * sorted by cell, ghosts, neighbour lists and the per-step fields (geometry, free surface,
- * diffusion), which also serve the diagnostics of the state at time t. Returns 0, or -1 when
+ * sorted by cell, ghosts, neighbour lists, the per-step fields (geometry, free surface,
+ * shifting, diffusion) and bounce-back (tank.h), which also serve the diagnostics of the state at time t. Returns 0, or -1 when
  * out of memory. */
 int solver_prepare(solver *s, double t_stop);
-/* The prepared step: four RK4 stages, then bounce-back. */
+/* The prepared step: four RK4 stages. */
 void solver_advance(solver *s, double t_stop);
 /* solver_prepare, then solver_advance. */
 int solver_step(solver *s, double t_stop);
