@@ -22,7 +22,7 @@ static const char sap_case[] = "[case]\nname = sap\ndim = 2\nt_end = 0.1\n"
                                "[fluid]\nviscosity = 1.0e-5\n"
                                "[motion]\ntype = heave\namplitude = 0.0043\n"
                                "period = 0.07692307692307693\n"
-                               "[numerics]\nresolution = 20\nsound_speed = 10\n"
+                               "[numerics]\nresolution = 20\nsound_speed = 10\ndensity_bound = 0.5\n"
                                "[output]\ntimeseries_every = 0.005\n";
 
 static void run_scheme(const char *scheme)
