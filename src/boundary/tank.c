@@ -80,10 +80,7 @@ void tank_mirror_step_fields(particles *p, vec g_eff, double c0)
 }
 
 /* Reverses v when it points towards the wall on the `side` (-1: low wall, +1: high wall). */
-static inline double away_from_wall(double v, int side)
-{
-    return v * side > 0.0 ? -v : v;
-}
+static inline double away_from_wall(double v, int side) { return v * side > 0.0 ? -v : v; }
 
 size_t tank_bounce_back(const tank *t, particles *p, double dr, double dt)
 {
@@ -95,7 +92,7 @@ size_t tank_bounce_back(const tank *t, particles *p, double dr, double dt)
         for (int d = 0; d < DIM; d++) {
             double transport = p->u[d][i] + p->shift[d][i];
             double ahead = p->x[d][i] + transport * dt;
-            int side = ahead < near && transport < 0.0             ? -1
+            int side = ahead < near && transport < 0.0                ? -1
                        : t->size[d] - ahead < near && transport > 0.0 ? 1
                                                                       : 0;
             if (!side) continue;

@@ -14,8 +14,7 @@ static verdict particle_verdict(const solver *s, size_t i)
     if (!isfinite(p->rho[i]) || !isfinite(p->m[i])) return NOT_FINITE;
     if (!tank_contains(&s->tank, vec_load(p->x, i))) return OUTSIDE;
     double rho0 = s->pp.rho0, bound = s->cfg->density_bound;
-    if (p->rho[i] < rho0 * (1.0 - bound) || p->rho[i] > rho0 * (1.0 + bound))
-        return DENSITY;
+    if (p->rho[i] < rho0 * (1.0 - bound) || p->rho[i] > rho0 * (1.0 + bound)) return DENSITY;
     return SOUND;
 }
 
