@@ -38,7 +38,7 @@ sanitize: deps
 
 bench: deps
 	@$(MAKE) --no-print-directory build
-	$(BUILD)/bench_step
+	$(BUILD)/bench_step 30 delta delta-plus-ale delta-ale
 
 clean:
 	rm -rf $(BUILD) $(ASAN_BUILD)

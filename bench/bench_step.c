@@ -1,7 +1,10 @@
-/* bench_step: delta-SPH on a 2D sloshing tank of about 50,000 particles (the INM1 tank of
- * the paper, sway, every delta-SPH term on, LES on, no-slip walls), timed over whole steps
- * on 1 and 2 threads. Prints particle-steps per second (PS/s), neighbour-pair evaluations
- * per second and bytes per particle. A benchmark: it never fails on timing. */
+/* bench_step: a 2D sloshing tank of about 50,000 particles (the INM1 tank of the paper,
+ * sway, LES on, no-slip walls), timed over whole steps on 1 and 2 threads, for each scheme
+ * named on the command line (default delta-SPH): bench_step [STEPS [SCHEME...]]. Prints
+ * particle-steps per second (PS/s), neighbour-pair evaluations per second, bytes per
+ * particle and each scheme's cost per step against the first. delta-plus-ALE starts with
+ * eta = 0, so its steps are delta-plus-SPH steps; those with eta = 1 are delta-ALE steps.
+ * A benchmark: it never fails on timing. */
 #define DIM 2
 #include "app/progress.h"
 #include "scheme/solver.h"
@@ -47,16 +50,18 @@ static double bytes_per_particle(const solver *s)
     return (store + work + lists + cells) / (double)p->n_fluid;
 }
 
-int main(int argc, char **argv)
+/* Times `steps` steps of `scheme` on 1 and 2 threads; stores the PS/s in ps_out[0..1]. */
+static int bench_scheme(const char *scheme, int steps, double ps_out[2])
 {
-    int steps = argc > 1 ? atoi(argv[1]) : 30;
+    char set[64], err[1024];
+    snprintf(set, sizeof set, "model.scheme=%s", scheme);
+    const char *overrides[] = {set};
     config cfg;
-    char err[1024];
-    if (config_load_string(&cfg, bench_case, "bench", NULL, 0, err, sizeof err)) {
+    if (config_load_string(&cfg, bench_case, "bench", overrides, 1, err, sizeof err)) {
         fprintf(stderr, "%s\n", err);
         return 1;
     }
-    printf("bench_step: delta-SPH, 2D INM1 tank, sway, LES on, no-slip, double precision\n");
+    printf("bench_step: %s, 2D INM1 tank, sway, LES on, no-slip, double precision\n", scheme);
     for (int threads = 1; threads <= 2; threads++) {
         omp_set_num_threads(threads);
         solver s;
@@ -69,6 +74,7 @@ int main(int argc, char **argv)
         for (int k = 0; k < steps; k++) solver_step(&s, cfg.t_end);
         double wall = progress_wall_time() - t0;
         double n = (double)s.p.n_fluid, ps = n * steps / wall;
+        ps_out[threads - 1] = ps;
         /* per step: one fields pass + one diffusion pass + four RK stages over the pairs */
         double pair_evals = support_pairs(&s) * 6.0 * steps / wall;
         printf("threads %d: %zu fluid + %zu ghost particles, %d steps in %.2f s: "
@@ -77,6 +83,27 @@ int main(int argc, char **argv)
                threads, s.p.n_fluid, s.p.n_total - s.p.n_fluid, steps, wall, ps, pair_evals,
                bytes_per_particle(&s), support_pairs(&s) / n);
         solver_free(&s);
+    }
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    int steps = argc > 1 ? atoi(argv[1]) : 30;
+    const char *default_scheme[] = {"delta"};
+    const char *const *schemes = argc > 2 ? (const char *const *)argv + 2 : default_scheme;
+    int n_schemes = argc > 2 ? argc - 2 : 1;
+    double first[2] = {0.0, 0.0};
+    for (int k = 0; k < n_schemes; k++) {
+        double ps[2];
+        if (bench_scheme(schemes[k], steps, ps)) return 1;
+        if (k == 0) {
+            first[0] = ps[0];
+            first[1] = ps[1];
+        } else {
+            printf("bench_step: a %s step costs %.2f (1 thread) and %.2f (2 threads) %s steps\n",
+                   schemes[k], first[0] / ps[0], first[1] / ps[1], schemes[0]);
+        }
     }
     return 0;
 }

@@ -62,8 +62,8 @@ int solver_init(solver *s, const config *cfg, char *err, size_t err_len);
 void solver_free(solver *s);
 /* Sets up the step from the current state: its size min(Eq. (8), t_stop - t), the fluid
  * sorted by cell, ghosts, neighbour lists, the per-step fields (geometry, free surface,
- * shifting, diffusion) and bounce-back (tank.h), which also serve the diagnostics of the state at time t. Returns 0, or -1 when
- * out of memory. */
+ * shifting, diffusion), which also serve the diagnostics of the state at time t, and
+ * bounce-back (tank.h). Returns 0, or -1 when out of memory. */
 int solver_prepare(solver *s, double t_stop);
 /* The prepared step: four RK4 stages. */
 void solver_advance(solver *s, double t_stop);
