@@ -15,15 +15,16 @@
 #include "table.h"
 #include "run_case.h"
 
-static const char sap_case[] = "[case]\nname = sap-standard\ndim = 2\nt_end = 0.5\n"
-                               "[tank]\nlength = 0.1172\nheight = 0.0272\n"
-                               "[liquid]\nheight = 0.0136\n"
-                               "[fluid]\nviscosity = 1.0e-5\n"
-                               "[motion]\ntype = heave\namplitude = 0.0043\n"
-                               "period = 0.07692307692307693\n"
-                               "[model]\nscheme = standard\nedbc = false\n"
-                               "[numerics]\nresolution = 20\nsound_speed = 10\ndensity_bound = 0.5\n"
-                               "[output]\ntimeseries_every = 0.005\n";
+static const char sap_case[] =
+    "[case]\nname = sap-standard\ndim = 2\nt_end = 0.5\n"
+    "[tank]\nlength = 0.1172\nheight = 0.0272\n"
+    "[liquid]\nheight = 0.0136\n"
+    "[fluid]\nviscosity = 1.0e-5\n"
+    "[motion]\ntype = heave\namplitude = 0.0043\n"
+    "period = 0.07692307692307693\n"
+    "[model]\nscheme = standard\nedbc = false\n"
+    "[numerics]\nresolution = 20\nsound_speed = 10\ndensity_bound = 0.5\n"
+    "[output]\ntimeseries_every = 0.005\n";
 
 static void test_standard_sph_keeps_volume(void **state)
 {

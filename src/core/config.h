@@ -48,8 +48,8 @@ typedef struct {
     /* [numerics] */
     int resolution;
     double h_over_dr;
-    double sound_speed; /* 0 = auto */
-    double cfl;         /* 0 = auto (Table 1) */
+    double sound_speed;   /* 0 = auto */
+    double cfl;           /* 0 = auto (Table 1) */
     double density_bound; /* breakdown when a density leaves rho0 (1 +- this) */
     /* [probes] */
     int n_gauges;
