@@ -22,7 +22,7 @@ static int check_case(const config *cfg)
     derived dv;
     derived_compute(cfg, &mo, &dv);
     motion_free(&mo);
-    if (derived_check(&dv, err, sizeof err)) {
+    if (derived_check(cfg, &dv, err, sizeof err)) {
         fprintf(stderr, "vcsph: %s\n", err);
         return RUN_BAD_INPUT;
     }

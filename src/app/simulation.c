@@ -77,12 +77,6 @@ static int graphical_error(solver *s, double *eps_gm)
     return -1;
 }
 
-/* Whether EdBC, Eq. (9), acts in the current state (model.edbc, and eta for with-eta0). */
-static int edbc_active(const run *r)
-{
-    return r->cfg->edbc == EDBC_ON || (r->cfg->edbc == EDBC_WITH_ETA0 && r->s.eta == 0);
-}
-
 /* The eta switch (theory §8) acts in solver_prepare; its events are written here. */
 static void control_step(run *r)
 {
@@ -119,8 +113,8 @@ static void write_series_row(run *r, int with_geometry)
         csv_put_empty(c);
     csv_put(c, dg.vol_sph / r->v0 - 1.0);
     csv_put(c, dg.mass / r->mass0 - 1.0);
-    csv_put_long(c, s->eta);
-    csv_put_long(c, edbc_active(r));
+    csv_put(c, s->eta_control.eta);
+    csv_put_long(c, control_edbc_acts(s));
     csv_put_long(c, s->n_edbc);
     if (with_geometry)
         csv_put_long(c, ve.n_free_surface);
@@ -198,7 +192,8 @@ static int write_snapshot(run *r)
     out_path(r, path, sizeof path, name);
     snapshot_field fields[16];
     int n_fields = snapshot_fields(s, fields);
-    snapshot_attrs attrs = {s->t, s->step, 0.0, DIM, s->dv.dr, s->dv.h, r->case_text};
+    snapshot_attrs attrs = {s->t,     s->step, s->eta_control.eta, DIM,
+                            s->dv.dr, s->dv.h, r->case_text};
     if (snapshot_write(path, s->p.n_fluid, fields, n_fields, &attrs, err, sizeof err)) {
         log_error("vcsph: %s", err);
         return -1;

@@ -53,15 +53,34 @@ void derived_compute(const config *cfg, const motion *mo, derived *dv)
     double aw = cfg->amplitude * dv->omega;
     dv->d_energy = 0.5 * dv->mass_liquid * aw * aw;
     dv->d_power = periodic ? dv->d_energy / cfg->period : 0.0;
+
+    /* T1 = 2 pi / sqrt(g k tanh(k H)), k = pi / L: the first mode of linear sloshing */
+    double k = M_PI / cfg->tank_length;
+    double g = cfg->gravity > 0.0 ? cfg->gravity : dv->g_max;
+    dv->t_sloshing1 = g > 0.0 ? 2.0 * M_PI / sqrt(g * k * tanh(k * cfg->liquid_height)) : 0.0;
+    if (periodic)
+        dv->response_period = cfg->motion == MOTION_HEAVE ? 2.0 * cfg->period : cfg->period;
+    else
+        dv->response_period = dv->t_sloshing1;
 }
 
-int derived_check(const derived *dv, char *err, size_t err_len)
+int derived_check(const config *cfg, const derived *dv, char *err, size_t err_len)
 {
-    if (dv->c0 > 0.0) return 0;
-    snprintf(err, err_len,
-             "numerics.sound_speed = auto: 10 sqrt(2 g_max H) is 0 without gravity or tank "
-             "motion; give a sound speed > 0 (m/s; Eq. 6: at least 10 times the largest speed)");
-    return 2;
+    if (dv->c0 <= 0.0) {
+        snprintf(err, err_len,
+                 "numerics.sound_speed = auto: 10 sqrt(2 g_max H) is 0 without gravity or tank "
+                 "motion; give a sound speed > 0 (m/s; Eq. 6: at least 10 times the largest "
+                 "speed)");
+        return 2;
+    }
+    if (cfg->scheme == SCHEME_DELTA_PLUS_ALE && cfg->eta_control == ETA_CONTROL_ADAPTIVE &&
+        !(dv->response_period > 0.0)) {
+        snprintf(err, err_len,
+                 "model.eta_control = adaptive averages eps_V1 over the period of the flow's "
+                 "response, which needs periodic motion or gravity; use eta_control = threshold");
+        return 2;
+    }
+    return 0;
 }
 
 void derived_print(const config *cfg, const derived *dv, FILE *out)
@@ -98,4 +117,7 @@ void derived_print(const config *cfg, const derived *dv, FILE *out)
         fprintf(out, "dE               %.6g J%s\n", dv->d_energy, per);
         fprintf(out, "dW               %.6g W%s\n", dv->d_power, per);
     }
+    fprintf(out, "T1 (sloshing)    %.6g s\n", dv->t_sloshing1);
+    fprintf(out, "response period  %.6g s (the adaptive eta control's average)\n",
+            dv->response_period);
 }

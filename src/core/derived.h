@@ -21,13 +21,19 @@ typedef struct {
     double dt_v, dt_c, dt_a, dt_st, dt; /* Eq. (8); dt_a estimated with g_max */
     double mass_liquid;                 /* M_L = rho0 L H W (W = 1 in 2D) */
     double omega;                       /* 2 pi / T, 0 without periodic motion */
+    double t_sloshing1;                 /* first linear sloshing period along x (theory §11) */
+    double response_period;             /* period of the flow's response: T in sway, 2T in
+                                           heave (parametric, half the forcing frequency),
+                                           else t_sloshing1; the adaptive eta control averages
+                                           eps_V1 over it */
     double d_energy, d_power;           /* dE = M_L (A w)^2 / 2, dW = dE / T (Table 3) */
 } derived;
 
 void derived_compute(const config *cfg, const motion *mo, derived *out);
 /* Whether the derived numbers make a runnable case (a sound speed > 0: `auto` needs gravity
- * or motion). Returns 0, or 2 with a message naming the key. */
-int derived_check(const derived *dv, char *err, size_t err_len);
+ * or motion; a response period > 0 for the adaptive eta control). Returns 0, or 2 with a
+ * message naming the key. */
+int derived_check(const config *cfg, const derived *dv, char *err, size_t err_len);
 /* Prints the derived numbers, one per line, for `vcsph check`. */
 void derived_print(const config *cfg, const derived *dv, FILE *out);
 

@@ -1,5 +1,5 @@
-/* control: the two volume controls of the paper: EdBC, Eq. (9), and the eta switch of
- * delta-plus-ALE-SPH (sec. 5.1.1, Fig. 9; theory §8). */
+/* control: the EdBC correction of the paper, Eq. (9). The other volume control, the eta of
+ * delta-plus-ALE-SPH (sec. 5.1.1, Fig. 9; theory §8), is eta_control. */
 #ifndef VCSPH_CONTROL_H
 #define VCSPH_CONTROL_H
 
@@ -7,15 +7,15 @@
 
 #define EDBC_LAMBDA 0.1 /* Eq. (9): particles of S_F with lambda below this */
 
-#define control_edbc       DIM_NAME(control_edbc)
-#define control_eta_switch DIM_NAME(control_eta_switch)
+#define control_edbc_acts DIM_NAME(control_edbc_acts)
+#define control_edbc      DIM_NAME(control_edbc)
+
+/* Whether EdBC acts in the current state: model.edbc = true, or with-eta0 while the eta
+ * control is in its eta = 0 regime. */
+int control_edbc_acts(const solver *s);
 
 /* Eq. (9) on this step's geometry: p = 0, rho = rho0 (V = m / rho0) for the particles of S_F
- * with lambda < 0.1, when model.edbc is on (with-eta0: only while eta = 0). Sets s->n_edbc. */
+ * with lambda < 0.1, when control_edbc_acts. Sets s->n_edbc. */
 void control_edbc(solver *s);
-
-/* The paper's switch (delta-plus-ALE only): eta = 1 when eps_V1 > +threshold, eta = 0 when
- * eps_V1 < -threshold. Returns 1 when eta changed (and describes the switch in `detail`). */
-int control_eta_switch(solver *s, double eps_v1, char *detail, size_t detail_len);
 
 #endif

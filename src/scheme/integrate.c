@@ -122,8 +122,8 @@ int solver_prepare(solver *s, double t_stop)
         /* eps_V1 of this state decides eta for the step (theory §8) */
         volume_errors ve;
         volume_compute(&s->p, s->dv.cell_volume, s->scratch, &ve);
-        s->eta_switched =
-            control_eta_switch(s, ve.eps_v1, s->eta_switch_detail, sizeof s->eta_switch_detail);
+        s->eta_switched = eta_control_update(&s->eta_control, s->t, ve.eps_v1, s->eta_switch_detail,
+                                             sizeof s->eta_switch_detail);
     }
     control_edbc(s);
     if (s->n_edbc > 0) /* the ghosts of corrected particles carry the corrected state */
@@ -131,7 +131,7 @@ int solver_prepare(solver *s, double t_stop)
     if (s->pp.shifting) fields_shifting(&s->pp, &s->p, &s->nl);
     if (tank_bounce_back(&s->tank, &s->p, s->dv.dr, dt) > 0) /* ghosts of reversed velocities */
         tank_refresh_ghosts(&s->tank, &s->p, g_eff, s->pp.rho0, s->pp.c0);
-    fields_frozen_terms(&s->pp, &s->p, &s->nl, g_eff, s->eta, s->dt);
+    fields_frozen_terms(&s->pp, &s->p, &s->nl, g_eff, s->eta_control.eta > 0.0, s->dt);
     return 0;
 }
 
@@ -156,7 +156,7 @@ void solver_advance(solver *s, double t_stop)
             solver_update_eos(s);
             tank_refresh_ghosts(&s->tank, p, g_eff, s->pp.rho0, s->pp.c0);
         }
-        rhs_compute(&s->pp, p, &s->nl, g_eff, s->eta, &s->k);
+        rhs_compute(&s->pp, p, &s->nl, g_eff, s->eta_control.eta, &s->k);
         if (stage == 0) s->max_acc = max_acceleration(s);
         work += stage_w[stage] * input_power(s, ts);
         double w = stage_w[stage];

@@ -10,10 +10,11 @@
  * call below, so the loop is specialised once per loop, never tested per pair (design §2).
  * With ale (shifting on, Eq. 3): the particles move with u + du, the continuity equation
  * gains -rho_i du_ji . grad W V_j and the flux div(rho du), the momentum equation
- * rho (du . grad) u, and with variable masses dm/dt = div(rho du) V_i + D^m. */
+ * rho (du . grad) u, and with variable masses dm/dt = eta [div(rho du) V_i + D^m]. */
 static inline void rhs_particle(const physics_params *pp, const particles *p,
                                 const neighbour_list *nl, size_t i, vec g_eff, const bool les,
-                                const bool ale, const bool variable_mass, const rates *out)
+                                const bool ale, const bool variable_mass, double eta,
+                                const rates *out)
 {
     const kernel *k = &pp->k;
     vec xi = vec_load(p->x, i), ui = vec_load(p->u, i), uwi = vec_load(p->u_wall, i);
@@ -52,18 +53,18 @@ static inline void rhs_particle(const physics_params *pp, const particles *p,
         out->dx[d][i] = ui.c[d] + dui.c[d];
     }
     /* Eq. (3): dm/dt = eta [div(rho du) V_i + D^m] (fluid pairs only: the total is exact) */
-    out->dm[i] = variable_mass ? mass_flux + p->diff_m[i] : 0.0;
+    out->dm[i] = variable_mass ? eta * (mass_flux + p->diff_m[i]) : 0.0;
 }
 
 #define RHS_LOOP(les, ale, mass)                                                                   \
     _Pragma("omp parallel for schedule(static)") for (size_t i = 0; i < p->n_fluid; i++)           \
-        rhs_particle(pp, p, nl, i, g_eff, les, ale, mass, out)
+        rhs_particle(pp, p, nl, i, g_eff, les, ale, mass, eta, out)
 
 void rhs_compute(const physics_params *pp, const particles *p, const neighbour_list *nl, vec g_eff,
-                 bool variable_mass, const rates *out)
+                 double eta, const rates *out)
 {
     /* variable masses come only with shifting (Table 1: eta = 1 implies xi = 1) */
-    int variant = (pp->les ? 4 : 0) + (pp->shifting ? 2 : 0) + (pp->shifting && variable_mass);
+    int variant = (pp->les ? 4 : 0) + (pp->shifting ? 2 : 0) + (pp->shifting && eta > 0.0);
     switch (variant) {
     case 0: RHS_LOOP(false, false, false); break;
     case 2: RHS_LOOP(false, true, false); break;

@@ -19,8 +19,9 @@ typedef struct {
 
 /* Needs fluid p, vol, u_wall and the ghosts refreshed for this stage, and the frozen per-step
  * fields. g_eff = g - a_tank(t) is the body force in the tank frame (theory §6);
- * variable_mass is eta = 1 of Eq. (3). */
+ * eta in [0, 1] weighs the mass equation of Eq. (3) (0: constant masses; the frozen D^m must
+ * have been computed when eta > 0). */
 void rhs_compute(const physics_params *pp, const particles *p, const neighbour_list *nl, vec g_eff,
-                 bool variable_mass, const rates *out);
+                 double eta, const rates *out);
 
 #endif

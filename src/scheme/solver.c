@@ -62,7 +62,7 @@ int solver_init(solver *s, const config *cfg, char *err, size_t err_len)
     int status = motion_init(&s->mo, cfg, err, err_len);
     if (status) return status;
     derived_compute(cfg, &s->mo, &s->dv);
-    if ((status = derived_check(&s->dv, err, err_len))) {
+    if ((status = derived_check(cfg, &s->dv, err, err_len))) {
         motion_free(&s->mo);
         return status;
     }
@@ -75,8 +75,7 @@ int solver_init(solver *s, const config *cfg, char *err, size_t err_len)
         solver_free(s);
         return 2;
     }
-    /* Table 1: delta-ALE has variable masses; delta-plus-ALE starts as delta-plus (sec. 5.1.1) */
-    s->eta = models_params(cfg->scheme).eta == 1;
+    eta_control_init(&s->eta_control, cfg, s->dv.response_period);
     /* before any step, the only known acceleration is the largest effective gravity */
     s->max_acc = s->dv.g_max;
     return 0;

@@ -9,6 +9,7 @@
 #include "core/config.h"
 #include "core/derived.h"
 #include "core/particles.h"
+#include "scheme/eta_control.h"
 #include "scheme/physics_params.h"
 #include "scheme/rhs.h"
 
@@ -39,8 +40,8 @@ typedef struct {
     double skin;                 /* neighbour-list margin of this step */
     double max_displacement;     /* largest move of a particle during the last step */
     double work_in;              /* integral of the input power -sum m a_tank . u */
-    int eta;                     /* eta of Eq. (3): 1 = variable masses (delta-ALE; switched in
-                                    delta-plus-ALE) */
+    eta_controller eta_control;  /* eta of Eq. (3): 1 = variable masses (delta-ALE), varied in
+                                    delta-plus-ALE by the switch (theory §8) */
     long n_edbc;                 /* particles corrected by EdBC at the last step start */
     int eta_switched;            /* the last solver_prepare switched eta ... */
     char eta_switch_detail[160]; /* ... and how */
