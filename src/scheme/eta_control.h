@@ -46,8 +46,9 @@ typedef struct {
  * otherwise eta is Table 1's, fixed. response_period is T_f (derived_response_period). */
 void eta_control_init(eta_controller *c, const config *cfg, double response_period);
 
-/* Takes eps_V1 of the state at time t (called once per step, t increasing) and sets eta for
- * the step from t. Returns 1 when the regime changed, with a description in `detail`. */
+/* Takes eps_V1 of the state at time t (called once per step, from t = 0, t increasing) and
+ * sets eta for the step from t. Returns 1 when the regime changed, with a description in
+ * `detail`. */
 int eta_control_update(eta_controller *c, double t, double eps_v1, char *detail, size_t detail_len);
 
 #endif
