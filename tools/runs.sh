@@ -1,0 +1,37 @@
+# runs.sh: what the validation scripts share, sourced by them (not run on its own).
+#   vcsph_run DIR [vcsph run arguments...]   runs build/vcsph into DIR with $threads threads:
+#       the terminal output goes to DIR/run.txt, the exit status to DIR/exit (3: breakdown)
+#   for_each_run JOBS FUNCTION RUN...        calls FUNCTION with each RUN's words, at most
+#       JOBS at a time, and says how long they took
+#   us_per_particle_step DIR                 the run's cost from DIR/log.txt, or -
+vcsph_run() {
+  local dir=$1 status=0
+  shift
+  mkdir -p "$dir"
+  OMP_NUM_THREADS=$threads build/vcsph run "$@" -o "$dir" --quiet >"$dir/run.txt" 2>&1 ||
+    status=$?
+  echo $status >"$dir/exit"
+  return 0
+}
+
+for_each_run() {
+  local jobs=$1 function=$2 start r
+  shift 2
+  start=$(date +%s)
+  for r in "$@"; do
+    if [ "$jobs" -gt 1 ]; then
+      while [ "$(jobs -rp | wc -l)" -ge "$jobs" ]; do wait -n; done
+      $function $r &
+    else
+      $function $r
+    fi
+  done
+  wait
+  echo "$(basename "$0"): $# runs in $(( $(date +%s) - start )) s"
+}
+
+us_per_particle_step() {
+  local cost
+  cost=$(sed -n 's/.*(\([0-9.e+-]*\) particle-steps\/s).*/\1/p' "$1/log.txt" | tail -n 1)
+  awk -v cost="$cost" 'BEGIN { if (cost > 0) printf "%.2f", 1e6 / cost; else printf "-" }'
+}
