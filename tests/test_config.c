@@ -60,6 +60,7 @@ static void test_minimal_gives_defaults(void **state)
     assert_true(c.liquid_height == 0.2);
     assert_true(c.liquid_length == 1.0); /* default: the tank length */
     assert_true(c.liquid_x0 == 0.0 && c.liquid_y0 == 0.0);
+    assert_int_equal(c.liquid_shape, LIQUID_BOX); /* the whole box, as before the key */
     assert_true(c.density == 1000.0 && c.viscosity == 1.0e-6);
     assert_true(c.surface_tension == 0.0 && c.gravity == 9.81);
     assert_int_equal(c.motion, MOTION_NONE);
@@ -110,6 +111,7 @@ static void test_full_file(void **state)
     assert_true(c.tank_length == 1.2 && c.tank_height == 0.6 && c.tank_width == 0.3);
     assert_true(c.liquid_height == 0.25 && c.liquid_length == 0.8);
     assert_true(c.liquid_x0 == 0.1 && c.liquid_y0 == 0.05);
+    assert_int_equal(c.liquid_shape, LIQUID_ELLIPSE);
     assert_true(c.density == 998.2 && c.viscosity == 1.0e-5);
     assert_true(c.surface_tension == 0.0728 && c.gravity == 9.80665);
     assert_int_equal(c.motion, MOTION_TABLE);
@@ -208,6 +210,8 @@ static void test_names(void **state)
     assert_string_equal(config_eta_control_name(ETA_CONTROL_ADAPTIVE), "adaptive");
     assert_string_equal(config_wall_name(WALL_NO_SLIP), "no-slip");
     assert_string_equal(config_wall_name(WALL_FREE_SLIP), "free-slip");
+    assert_string_equal(config_liquid_shape_name(LIQUID_BOX), "box");
+    assert_string_equal(config_liquid_shape_name(LIQUID_ELLIPSE), "ellipse");
 }
 
 /* ---- round trip --------------------------------------------------------------------------- */
@@ -284,6 +288,28 @@ static void test_round_trip_awkward_values(void **state)
     assert_contains(err, "more than 64 pressure probes");
 }
 
+/* liquid.shape: box by default, ellipse from the file or --set, each written back. */
+static void test_liquid_shape(void **state)
+{
+    (void)state;
+    config c;
+    char err[ERR_LEN];
+    assert_int_equal(load_text(&c, MINIMAL, NULL, 0, err), 0);
+    assert_int_equal(c.liquid_shape, LIQUID_BOX);
+    assert_int_equal(load_text(&c, MINIMAL "[liquid]\nshape = box\n", NULL, 0, err), 0);
+    assert_int_equal(c.liquid_shape, LIQUID_BOX);
+    int rc = load_text(&c, MINIMAL "[liquid]\nshape = ellipse\n", NULL, 0, err);
+    if (rc) print_error("%s\n", err);
+    assert_int_equal(rc, 0);
+    assert_int_equal(c.liquid_shape, LIQUID_ELLIPSE);
+    const char *set[] = {"liquid.shape=ellipse", "liquid.y0=0.1", "fluid.gravity=0"};
+    rc = load_text(&c, MINIMAL, set, 3, err);
+    if (rc) print_error("%s\n", err);
+    assert_int_equal(rc, 0);
+    assert_int_equal(c.liquid_shape, LIQUID_ELLIPSE);
+    assert_round_trip(&c);
+}
+
 /* Every key of design §3 is written, each section once, in the design's order. */
 static void test_write_has_every_key(void **state)
 {
@@ -305,10 +331,11 @@ static void test_write_has_every_key(void **state)
         if (*line == '\n') line++;
         if (*line && *line != ';' && *line != '[' && *line != '\n') n_keys++;
     }
-    assert_int_equal(n_keys, 40); /* design §3 plus numerics.density_bound */
+    assert_int_equal(n_keys, 41); /* design §3 plus numerics.density_bound and liquid.shape */
     assert_non_null(strstr(text, "\nsound_speed      = auto ;"));
     assert_non_null(strstr(text, "\nh_over_dr        = 2 ;"));
     assert_non_null(strstr(text, "\nlength           = 1 ;"));
+    assert_non_null(strstr(text, "\nshape            = box ;"));
     free(text);
 }
 
@@ -365,6 +392,10 @@ static const bad_case bad_cases[] = {
     BAD("liquid longer than the tank", MINIMAL "[liquid]\nx0 = 0.5\n",
         "bad.ini:11: ", "liquid.x0 = 0.5", "longer than the tank"),
     BAD("negative x0", MINIMAL "[liquid]\nx0 = -0.1\n", "bad.ini:11: ", "liquid.x0", ">= 0"),
+    BAD("unknown liquid shape", MINIMAL "[liquid]\nshape = circle\n",
+        "bad.ini:11: liquid.shape = circle: must be one of box | ellipse"),
+    BAD("misspelt liquid shape", MINIMAL "[liquid]\nshape = elipse\n",
+        "bad.ini:11: liquid.shape = elipse: ", "did you mean 'ellipse'?", "box | ellipse"),
     BAD("resolution below 4", "[case]\nt_end = 1.0\n[numerics]\nresolution = 3\n",
         "bad.ini:4: ", "numerics.resolution = 3", "integer >= 4"),
     BAD("resolution not an integer", "[numerics]\nresolution = 20.5\n",
@@ -579,6 +610,7 @@ int main(void)
         cmocka_unit_test(test_names),
         cmocka_unit_test(test_round_trip_minimal_and_full),
         cmocka_unit_test(test_round_trip_awkward_values),
+        cmocka_unit_test(test_liquid_shape),
         cmocka_unit_test(test_write_has_every_key),
         cmocka_unit_test(test_line_too_long),
         cmocka_unit_test(test_errors_name_the_file),

@@ -7,15 +7,19 @@ int lattice_fill(particles *p, const config *cfg, const derived *dv)
     size_t n = (size_t)dv->n_fluid;
     if (particles_reserve(p, n + n / 2 + 64)) return -1;
     double cell_volume = dv->cell_volume;
+    /* the hydrostatic pressure below the top of the liquid box, whatever its shape (with
+       gravity 0, the droplet tests, it is 0) */
     double surface = cfg->liquid_y0 + cfg->liquid_height;
-    double origin[3] = {cfg->liquid_x0, cfg->liquid_y0, 0.0};
     size_t i = 0;
     for (long c2 = 0; c2 < (DIM == 3 ? dv->n_axis[2] : 1); c2++)
         for (long c1 = 0; c1 < dv->n_axis[1]; c1++)
-            for (long c0 = 0; c0 < dv->n_axis[0]; c0++, i++) {
-                long c[3] = {c0, c1, c2};
+            for (long c0 = 0; c0 < dv->n_axis[0]; c0++) {
+                double x[3];
+                /* the predicate derived_compute counted n_fluid with */
+                if (!derived_lattice_point(cfg, dv, c0, c1, c2, x)) continue;
+                if (i == n) return -1; /* cannot happen: the count is the same loop */
                 for (int d = 0; d < DIM; d++) {
-                    p->x[d][i] = origin[d] + (c[d] + 0.5) * dv->spacing[d];
+                    p->x[d][i] = x[d];
                     p->u[d][i] = 0.0;
                 }
                 double pressure = cfg->density * cfg->gravity * (surface - p->x[1][i]);
@@ -24,7 +28,9 @@ int lattice_fill(particles *p, const config *cfg, const derived *dv)
                 p->m[i] = p->rho[i] * cell_volume;
                 p->vol[i] = p->m[i] / p->rho[i];
                 p->id[i] = (int64_t)i;
+                i++;
             }
+    if (i != n) return -1;
     p->n_fluid = p->n_total = n;
     return 0;
 }

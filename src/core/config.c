@@ -36,6 +36,7 @@ _Static_assert(sizeof(motion_kind) == sizeof(int), "enum size");
 _Static_assert(sizeof(edbc_mode) == sizeof(int), "enum size");
 _Static_assert(sizeof(eta_control_kind) == sizeof(int), "enum size");
 _Static_assert(sizeof(wall_kind) == sizeof(int), "enum size");
+_Static_assert(sizeof(liquid_shape_kind) == sizeof(int), "enum size");
 
 /* ---- the schema --------------------------------------------------------------------------- */
 
@@ -111,6 +112,7 @@ static const char *const scheme_words[] = {"standard",  "delta",          "delta
 static const char *const edbc_words[] = {"false", "true", "with-eta0", NULL};
 static const char *const eta_control_words[] = {"threshold", "adaptive", NULL};
 static const char *const wall_words[] = {"no-slip", "free-slip", NULL};
+static const char *const liquid_shape_words[] = {"box", "ellipse", NULL};
 
 static const char *const sections[] = {"case",  "tank",     "liquid", "fluid", "motion",
                                        "model", "numerics", "probes", "output"};
@@ -136,6 +138,8 @@ static const key_spec keys[] = {
         "a length > 0 (m); default: the tank length"),
     KEY("liquid", "x0", KIND_REAL, 0, "0.0", liquid_x0, NON_NEGATIVE, NULL, "a position >= 0 (m)"),
     KEY("liquid", "y0", KIND_REAL, 0, "0.0", liquid_y0, NON_NEGATIVE, NULL, "a position >= 0 (m)"),
+    KEY("liquid", "shape", KIND_WORD, 0, "box", liquid_shape, ANY, liquid_shape_words,
+        "one of box | ellipse (the ellipse, or ellipsoid, inscribed in the box)"),
 
     KEY("fluid", "density", KIND_REAL, 0, "1000.0", density, POSITIVE, NULL,
         "a density > 0 (kg/m^3)"),
@@ -1256,3 +1260,7 @@ const char *config_eta_control_name(eta_control_kind e)
     return word_at(eta_control_words, (int)e);
 }
 const char *config_wall_name(wall_kind w) { return word_at(wall_words, (int)w); }
+const char *config_liquid_shape_name(liquid_shape_kind s)
+{
+    return word_at(liquid_shape_words, (int)s);
+}

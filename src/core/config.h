@@ -22,6 +22,8 @@ typedef enum { MOTION_NONE, MOTION_SWAY, MOTION_HEAVE, MOTION_TABLE } motion_kin
 typedef enum { EDBC_OFF, EDBC_ON, EDBC_WITH_ETA0 } edbc_mode;
 typedef enum { ETA_CONTROL_THRESHOLD, ETA_CONTROL_ADAPTIVE } eta_control_kind;
 typedef enum { WALL_NO_SLIP, WALL_FREE_SLIP } wall_kind;
+/* The liquid at t = 0: the whole box, or the ellipse (ellipsoid) inscribed in it. */
+typedef enum { LIQUID_BOX, LIQUID_ELLIPSE } liquid_shape_kind;
 
 typedef struct {
     /* [case] */
@@ -32,6 +34,7 @@ typedef struct {
     double tank_length, tank_height, tank_width;
     /* [liquid] */
     double liquid_height, liquid_length, liquid_x0, liquid_y0;
+    liquid_shape_kind liquid_shape;
     /* [fluid] */
     double density, viscosity, surface_tension, gravity;
     /* [motion] */
@@ -82,5 +85,6 @@ const char *config_motion_name(motion_kind m);
 const char *config_edbc_name(edbc_mode e);
 const char *config_eta_control_name(eta_control_kind e);
 const char *config_wall_name(wall_kind w);
+const char *config_liquid_shape_name(liquid_shape_kind s);
 
 #endif

@@ -6,6 +6,26 @@
 
 static double min2(double a, double b) { return a < b ? a : b; }
 
+bool derived_lattice_point(const config *cfg, const derived *dv, long c0, long c1, long c2,
+                           double x[3])
+{
+    const long c[3] = {c0, c1, c2};
+    const double origin[3] = {cfg->liquid_x0, cfg->liquid_y0, 0.0};
+    int dim = cfg->dim;
+    for (int d = 0; d < 3; d++) x[d] = d < dim ? origin[d] + (c[d] + 0.5) * dv->spacing[d] : 0.0;
+    if (cfg->liquid_shape == LIQUID_BOX) return true;
+    /* (x - xc) / a = ((c + 1/2) L / n - L / 2) / (L / 2) = (2 c + 1 - n) / n: the same test on
+       the point's centre, computed from whole numbers, so that the kept set is exactly
+       symmetric about the centre of the box and free of rounding in x0, y0 and the spacing. */
+    double r2 = 0.0;
+    for (int d = 0; d < dim; d++) {
+        double n = (double)dv->n_axis[d];
+        double u = (2.0 * (double)c[d] + 1.0 - n) / n;
+        r2 += u * u;
+    }
+    return r2 <= 1.0;
+}
+
 void derived_compute(const config *cfg, const motion *mo, derived *dv)
 {
     double dr = cfg->liquid_height / cfg->resolution;
@@ -28,8 +48,22 @@ void derived_compute(const config *cfg, const motion *mo, derived *dv)
         dv->spacing[d] = extent[d] / (double)dv->n_axis[d];
         dv->v0 *= extent[d];
     }
-    dv->n_fluid = dv->n_axis[0] * dv->n_axis[1] * dv->n_axis[2];
-    dv->cell_volume = dv->v0 / (double)dv->n_fluid;
+    if (cfg->liquid_shape == LIQUID_BOX) {
+        dv->n_fluid = dv->n_axis[0] * dv->n_axis[1] * dv->n_axis[2];
+        dv->cell_volume = dv->v0 / (double)dv->n_fluid;
+    } else {
+        /* the ellipse (ellipsoid) inscribed in the box: the lattice points lattice_fill keeps,
+           each standing for one cell of the box lattice */
+        long n = 0;
+        double x[3];
+        for (long c2 = 0; c2 < dv->n_axis[2]; c2++)
+            for (long c1 = 0; c1 < dv->n_axis[1]; c1++)
+                for (long c0 = 0; c0 < dv->n_axis[0]; c0++)
+                    n += derived_lattice_point(cfg, dv, c0, c1, c2, x);
+        dv->n_fluid = n;
+        dv->cell_volume = dv->spacing[0] * dv->spacing[1] * dv->spacing[2];
+        dv->v0 = (double)n * dv->cell_volume;
+    }
 
     dv->g_max = motion_max_effective_gravity(mo, cfg->gravity, cfg->t_end);
     /* Eq. (6) with U_max the speed of a fall from H under g_max */
@@ -47,7 +81,10 @@ void derived_compute(const config *cfg, const motion *mo, derived *dv)
     dv->dt = min2(min2(dv->dt_v, dv->dt_c), min2(dv->dt_a, dv->dt_st));
 
     double width = cfg->dim == 3 ? cfg->tank_width : 1.0;
-    dv->mass_liquid = cfg->density * cfg->liquid_length * cfg->liquid_height * width;
+    if (cfg->liquid_shape == LIQUID_BOX)
+        dv->mass_liquid = cfg->density * cfg->liquid_length * cfg->liquid_height * width;
+    else
+        dv->mass_liquid = cfg->density * dv->v0;
     int periodic = (cfg->motion == MOTION_SWAY || cfg->motion == MOTION_HEAVE) && cfg->period > 0;
     dv->omega = periodic ? 2.0 * M_PI / cfg->period : 0.0;
     double aw = cfg->amplitude * dv->omega;
@@ -91,16 +128,21 @@ void derived_print(const config *cfg, const derived *dv, FILE *out)
     fprintf(out, "dr               %.6g m (N = %d)\n", dv->dr, cfg->resolution);
     fprintf(out, "h                %.6g m (h/dr = %g, support 2h = %.6g m)\n", dv->h,
             cfg->h_over_dr, 2.0 * dv->h);
+    bool box = cfg->liquid_shape == LIQUID_BOX;
+    const char *inscribed = box             ? ""
+                            : cfg->dim == 2 ? "the ellipse inscribed in "
+                                            : "the ellipsoid inscribed in ";
     if (cfg->dim == 2)
-        fprintf(out, "fluid particles  %ld (%ld x %ld)\n", dv->n_fluid, dv->n_axis[0],
+        fprintf(out, "fluid particles  %ld (%s%ld x %ld)\n", dv->n_fluid, inscribed, dv->n_axis[0],
                 dv->n_axis[1]);
     else
-        fprintf(out, "fluid particles  %ld (%ld x %ld x %ld)\n", dv->n_fluid, dv->n_axis[0],
-                dv->n_axis[1], dv->n_axis[2]);
+        fprintf(out, "fluid particles  %ld (%s%ld x %ld x %ld)\n", dv->n_fluid, inscribed,
+                dv->n_axis[0], dv->n_axis[1], dv->n_axis[2]);
     if (dv->spacing[0] != dv->dr || (cfg->dim == 3 && dv->spacing[2] != dv->dr)) {
         fprintf(out, "lattice spacing  %.6g x %.6g", dv->spacing[0], dv->spacing[1]);
         if (cfg->dim == 3) fprintf(out, " x %.6g", dv->spacing[2]);
-        fprintf(out, " m (fills the liquid box exactly)\n");
+        fprintf(out, " m (%s)\n",
+                box ? "fills the liquid box exactly" : "the liquid box's lattice");
     }
     fprintf(out, "V0               %.6g m^%d\n", dv->v0, cfg->dim);
     fprintf(out, "g_max            %.6g m/s^2\n", dv->g_max);

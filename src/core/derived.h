@@ -7,19 +7,23 @@
 #include "core/config.h"
 
 typedef struct {
-    double dr, h;      /* spacing H/N and smoothing length */
-    long n_axis[3];    /* lattice particles along x, y, z (z: 1 in 2D) */
-    double spacing[3]; /* lattice spacing per axis: dr along y; along x (z) the liquid length
-                          (tank width) over a whole number of particles, within dr/(2 n) of dr */
-    long n_fluid;
-    double v0;                          /* initial liquid volume L H W = N x the cell volume
-                                           (per unit width in 2D) */
-    double cell_volume;                 /* v0 / N: a particle's initial volume, V_i0 (sec. 2.1) */
-    double g_max;                       /* largest effective gravity of the motion */
-    double c0;                          /* sound speed, given or 10 sqrt(2 g_max H) (Eq. 6) */
-    double k_c;                         /* CFL number (Table 1 unless given) */
+    double dr, h;       /* spacing H/N and smoothing length */
+    long n_axis[3];     /* lattice particles along x, y, z (z: 1 in 2D) */
+    double spacing[3];  /* lattice spacing per axis: dr along y; along x (z) the liquid length
+                           (tank width) over a whole number of particles, within dr/(2 n) of dr */
+    long n_fluid;       /* the lattice points kept (derived_lattice_point) */
+    double v0;          /* initial liquid volume (per unit width in 2D): the box
+                           L H W; for liquid.shape = ellipse, N x the cell
+                           volume, the volume the particles stand for */
+    double cell_volume; /* a particle's initial volume, V_i0 (sec. 2.1): v0 / N
+                           for the box, the product of the spacings for the
+                           ellipse */
+    double g_max;       /* largest effective gravity of the motion */
+    double c0;          /* sound speed, given or 10 sqrt(2 g_max H) (Eq. 6) */
+    double k_c;         /* CFL number (Table 1 unless given) */
     double dt_v, dt_c, dt_a, dt_st, dt; /* Eq. (8); dt_a estimated with g_max */
-    double mass_liquid;                 /* M_L = rho0 L H W (W = 1 in 2D) */
+    double mass_liquid;                 /* M_L = rho0 L H W (W = 1 in 2D); rho0 v0 for the
+                                           ellipse */
     double omega;                       /* 2 pi / T, 0 without periodic motion */
     double t_sloshing1;                 /* first linear sloshing period along x (theory §11) */
     double response_period;             /* period of the flow's response: T in sway, 2T in
@@ -30,6 +34,13 @@ typedef struct {
 } derived;
 
 void derived_compute(const config *cfg, const motion *mo, derived *out);
+/* The initial lattice, one predicate for derived_compute (which counts n_fluid with it) and
+ * lattice_fill (which places the particles with it), so that the two always agree. Point
+ * (c0, c1, c2) of the liquid box lattice, 0 <= ck < n_axis[k] (c2 = 0 in 2D), sits at
+ * x = (x0, y0, 0) + (c + 1/2) spacing (x[2] = 0 in 2D); returns whether it is liquid at t = 0:
+ * always for liquid.shape = box, inside the inscribed ellipse (ellipsoid) for ellipse. */
+bool derived_lattice_point(const config *cfg, const derived *dv, long c0, long c1, long c2,
+                           double x[3]);
 /* Whether the derived numbers make a runnable case (a sound speed > 0: `auto` needs gravity
  * or motion; a response period > 0 for the adaptive eta control). Returns 0, or 2 with a
  * message naming the key. */
