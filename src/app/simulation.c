@@ -21,7 +21,7 @@
 static const char timeseries_header[] =
     "t,step,dt,n_fluid,eps_v1,eps_v2,eps_v3,eps_gm,eps_sph,mass_err,eta,edbc,n_edbc,"
     "n_free_surface,ekin,epot,eint,work_in,ediss,com_x,com_y,com_z,xmin,xmax,ymax,umax,"
-    "rho_min,rho_max";
+    "rho_min,rho_max,work_st";
 
 typedef struct {
     solver s;
@@ -124,7 +124,9 @@ static void write_series_row(run *r, int with_geometry)
     csv_put(c, dg.epot);
     csv_put(c, dg.eint);
     csv_put(c, s->work_in);
-    csv_put(c, s->work_in - (energy - r->energy0));
+    /* theory §10, with the work of surface tension: it stores energy in the surface, it does
+       not dissipate it (0 without surface tension) */
+    csv_put(c, s->work_in + s->work_st - (energy - r->energy0));
     for (int d = 0; d < 3; d++) csv_put(c, dg.com[d]);
     csv_put(c, dg.xmin);
     csv_put(c, dg.xmax);
@@ -132,6 +134,7 @@ static void write_series_row(run *r, int with_geometry)
     csv_put(c, dg.umax);
     csv_put(c, dg.rho_min);
     csv_put(c, dg.rho_max);
+    csv_put(c, s->work_st);
     csv_end_row(c);
 
     /* Eq. (6): the sound speed assumes speeds below c0/10 */
@@ -170,6 +173,8 @@ static int snapshot_fields(solver *s, snapshot_field *f)
     f[n] = (snapshot_field){"shifting", FIELD_DOUBLE, DIM, {0}};
     for (int d = 0; d < DIM; d++) f[n].component[d] = p->shift[d];
     n++;
+    if (s->pp.surface_tension)
+        f[n++] = (snapshot_field){"curvature", FIELD_DOUBLE, 1, {p->curvature}};
     return n;
 }
 

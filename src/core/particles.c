@@ -15,6 +15,7 @@ static int double_arrays(particles *p, double ***out)
         out[n++] = &p->grad_rho[d];
         out[n++] = &p->shift[d];
         out[n++] = &p->normal[d];
+        out[n++] = &p->st_force[d];
     }
     out[n++] = &p->rho;
     out[n++] = &p->p;
@@ -28,10 +29,12 @@ static int double_arrays(particles *p, double ***out)
     out[n++] = &p->kernel_sum;
     out[n++] = &p->gamma;
     out[n++] = &p->diff_m;
+    out[n++] = &p->interface;
+    out[n++] = &p->curvature;
     return n;
 }
 
-#define MAX_ARRAYS (6 * DIM + 12)
+#define MAX_ARRAYS (7 * DIM + 14)
 
 static int grow(void **ptr, size_t count, size_t size)
 {

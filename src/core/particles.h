@@ -34,6 +34,10 @@ typedef struct {
     double *diff_m;        /* mass diffusion D^m of Eq. (5) (fluid) */
     double *shift[DIM];    /* shifting velocity delta-u, Eq. (7) (zero until shifting exists) */
     double *diff_rho;      /* density diffusion D^rho of Eq. (5) (fluid) */
+    /* surface tension, with fluid.surface_tension > 0 only (scheme/surface_tension.h) */
+    double *interface;     /* interface function delta_Sigma, 1/m (ghosts: their source's) */
+    double *curvature;     /* kappa, 1/m (fluid) */
+    double *st_force[DIM]; /* F^st V_i, the frozen surface-tension force on the particle, N */
 
     /* ghosts only, indexed g - n_fluid */
     int32_t *ghost_source; /* fluid index it mirrors */

@@ -132,6 +132,8 @@ int solver_prepare(solver *s, double t_stop)
     if (tank_bounce_back(&s->tank, &s->p, s->dv.dr, dt) > 0) /* ghosts of reversed velocities */
         tank_refresh_ghosts(&s->tank, &s->p, g_eff, s->pp.rho0, s->pp.c0);
     fields_frozen_terms(&s->pp, &s->p, &s->nl, g_eff, s->eta_control.eta > 0.0, s->dt);
+    if (s->pp.surface_tension && surface_tension_compute(&s->st, &s->pp.k, &s->p, &s->nl))
+        return -1;
     return 0;
 }
 
@@ -145,7 +147,7 @@ void solver_advance(solver *s, double t_stop)
     double *y[RK_VARS], *rate[RK_VARS];
     rk_arrays(s, y, rate);
     for (int v = 0; v < RK_VARS; v++) memcpy(s->y0[v], y[v], n * sizeof(double));
-    double work = 0.0;
+    double work = 0.0, work_st = 0.0;
     for (int stage = 0; stage < 4; stage++) {
         double ts = s->t + stage_c[stage] * dt, c = stage_c[stage] * dt;
         vec g_eff = solver_g_eff(s, ts);
@@ -159,6 +161,7 @@ void solver_advance(solver *s, double t_stop)
         rhs_compute(&s->pp, p, &s->nl, g_eff, s->eta_control.eta, &s->k);
         if (stage == 0) s->max_acc = max_acceleration(s);
         work += stage_w[stage] * input_power(s, ts);
+        if (s->pp.surface_tension) work_st += stage_w[stage] * surface_tension_power(p, s->scratch);
         double w = stage_w[stage];
 #pragma omp parallel for schedule(static)
         for (size_t i = 0; i < n; i++)
@@ -169,6 +172,7 @@ void solver_advance(solver *s, double t_stop)
     for (size_t i = 0; i < n; i++)
         for (int v = 0; v < RK_VARS; v++) y[v][i] = s->y0[v][i] + dt * s->sum[v][i];
     s->work_in += dt * work;
+    s->work_st += dt * work_st;
     s->max_displacement = max_displacement(s);
     /* land exactly on t_stop when the step was cut to reach it */
     s->t = s->t + dt >= t_stop ? t_stop : s->t + dt;

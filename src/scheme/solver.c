@@ -31,6 +31,8 @@ static void physics_setup(solver *s)
     pp->delta_c0_h = mp.delta * pp->c0 * pp->k.h;
     pp->les = cfg->les;
     pp->van_driest = cfg->les && cfg->wall == WALL_NO_SLIP;
+    pp->surface_tension = cfg->surface_tension > 0.0;
+    s->st = surface_tension_setup(&pp->k, pp->dr, cfg->surface_tension);
 }
 
 static int alloc_work(solver *s)

@@ -12,6 +12,7 @@
 #include "scheme/eta_control.h"
 #include "scheme/physics_params.h"
 #include "scheme/rhs.h"
+#include "scheme/surface_tension.h"
 
 /* integrated fluid variables: x[DIM], u[DIM], rho, m */
 #define RK_VARS (2 * DIM + 2)
@@ -40,6 +41,8 @@ typedef struct {
     double skin;                 /* neighbour-list margin of this step */
     double max_displacement;     /* largest move of a particle during the last step */
     double work_in;              /* integral of the input power -sum m a_tank . u */
+    surface_tension_params st;   /* sigma and the calibration of the interface function */
+    double work_st;              /* integral of the surface-tension power sum F^st . u */
     eta_controller eta_control;  /* eta of Eq. (3): 1 = variable masses (delta-ALE), varied in
                                     delta-plus-ALE by the switch (theory §8) */
     long n_edbc;                 /* particles corrected by EdBC at the last step start */
