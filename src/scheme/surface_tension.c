@@ -221,3 +221,10 @@ double surface_tension_power(const particles *p, double *scratch)
         scratch[i] = vec_dot(vec_load(p->st_force, i), vec_load(p->u, i));
     return reduce_sum(scratch, p->n_fluid);
 }
+
+double surface_tension_energy(const surface_tension_params *st, const particles *p, double *scratch)
+{
+#pragma omp parallel for schedule(static)
+    for (size_t i = 0; i < p->n_fluid; i++) scratch[i] = p->interface[i] * p->vol[i];
+    return st->sigma * reduce_sum(scratch, p->n_fluid);
+}

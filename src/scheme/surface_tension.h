@@ -20,6 +20,7 @@ typedef struct {
 #define surface_tension_setup   DIM_NAME(surface_tension_setup)
 #define surface_tension_compute DIM_NAME(surface_tension_compute)
 #define surface_tension_power   DIM_NAME(surface_tension_power)
+#define surface_tension_energy  DIM_NAME(surface_tension_energy)
 
 surface_tension_params surface_tension_setup(const kernel *k, double dr, double sigma);
 
@@ -31,6 +32,12 @@ surface_tension_params surface_tension_setup(const kernel *k, double dr, double 
  * 0, or -1 when out of memory. */
 int surface_tension_compute(const surface_tension_params *st, const kernel *k, particles *p,
                             const neighbour_list *nl);
+
+/* The surface energy sigma sum delta V (J; per unit width in 2D): sigma times the discrete
+ * interface area, whose measure delta integrates to 1 across a flat surface. Needs this
+ * step's surface_tension_compute. */
+double surface_tension_energy(const surface_tension_params *st, const particles *p,
+                              double *scratch);
 
 /* The power of the frozen force on the fluid, sum F^st . u (W), in a fixed order. */
 double surface_tension_power(const particles *p, double *scratch);
