@@ -29,12 +29,11 @@ static double flat_gradient(const kernel *k, double dr, int depth)
 
 surface_tension_params surface_tension_setup(const kernel *k, double dr, double sigma)
 {
-    surface_tension_params st = {sigma, dr, 0.0, 0.0};
+    surface_tension_params st = {sigma, dr, 0.0};
     /* the layers within the support of the top one: the depth of S_F on a flat surface */
     int layers = (int)ceil(2.0 * k->h / dr) + 1;
     for (int depth = 0; depth < layers; depth++)
         st.flat_integral += 2.0 * flat_gradient(k, dr, depth) * dr;
-    st.delta_surface = 2.0 * flat_gradient(k, dr, 0) / st.flat_integral;
     return st;
 }
 

@@ -14,7 +14,6 @@ typedef struct {
     double sigma;         /* N/m; 0: off */
     double dr;            /* particle spacing */
     double flat_integral; /* sum over the layers of 2 |sum grad W V| dr on a flat lattice */
-    double delta_surface; /* normalised delta of the outermost layer of that lattice */
 } surface_tension_params;
 
 #define surface_tension_setup   DIM_NAME(surface_tension_setup)
