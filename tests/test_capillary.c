@@ -7,12 +7,14 @@
 #include "diag/freesurface.h"
 #include "scheme/solver.h"
 
+#include <omp.h>
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <cmocka.h>
 
 #include "check.h"
@@ -147,11 +149,47 @@ static void test_lamb(void **state)
     table_free(&ts);
 }
 
+/* 200 steps of the elliptic patch on `threads` threads; the positions and velocities (SoA). */
+static void run_ellipse_steps(int threads, double *out)
+{
+    char text[1024], err[1024];
+    patch_case(text, sizeof text, 2.0 * RADIUS * sqrt(1.5), 2.0 * RADIUS / sqrt(1.5), 33, 1e-4,
+               1.0);
+    config cfg;
+    solver s;
+    if (config_load_string(&cfg, text, "test", NULL, 0, err, sizeof err)) fail_msg("%s", err);
+    if (solver_init(&s, &cfg, err, sizeof err)) fail_msg("%s", err);
+    omp_set_num_threads(threads);
+    for (int k = 0; k < 200; k++) assert_int_equal(solver_step(&s, cfg.t_end), 0);
+    size_t n = s.p.n_fluid;
+    assert_true(n <= 2000); /* the caller's buffers */
+    for (int d = 0; d < DIM; d++) {
+        memcpy(out + (size_t)d * n, s.p.x[d], n * sizeof(double));
+        memcpy(out + (size_t)(DIM + d) * n, s.p.u[d], n * sizeof(double));
+    }
+    solver_free(&s);
+}
+
+/* The surface-tension force, its union-find and its sums do not depend on the thread count
+ * (design §2): the same bytes on one and two threads. */
+static void test_thread_count_independent(void **state)
+{
+    (void)state;
+    size_t size = 2 * DIM * 2000 * sizeof(double); /* the patch has 1282 particles */
+    double *one = calloc(1, size), *two = calloc(1, size);
+    run_ellipse_steps(1, one);
+    run_ellipse_steps(2, two);
+    assert_int_equal(memcmp(one, two, size), 0);
+    free(one);
+    free(two);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_laplace),
         cmocka_unit_test(test_lamb),
+        cmocka_unit_test(test_thread_count_independent),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
