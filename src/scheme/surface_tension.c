@@ -74,23 +74,55 @@ static void mirror_into_ghosts(particles *p)
     }
 }
 
+/* The normals of the free-surface particles, Shepard-averaged over their free-surface
+ * neighbours and normalised: the curvature differentiates these. A surface cut out of a
+ * lattice is a staircase whose flat steps and sharp corners make the normal jump; averaging
+ * it over 2h along the surface before taking its divergence halves the noise of the
+ * curvature there (rms 53 -> 34 % on a circle of R/dr = 20) and its bias (the ball's mean
+ * +11.4 -> +5.7 %), and leaves a smooth surface as it was (docs/surface-tension.md). Other
+ * fluid particles keep their own normal; ghosts get their source's, mirrored. */
+static void smoothed_normals(const kernel *k, const particles *p, const neighbour_list *nl,
+                             double *const smooth[DIM])
+{
+#pragma omp parallel for schedule(static)
+    for (size_t i = 0; i < p->n_fluid; i++) {
+        vec xi = vec_load(p->x, i), sum = vec_scale(vec_load(p->normal, i), k->norm * p->vol[i]);
+        if (p->surface[i] == SURFACE_FREE) {
+            const int32_t *row = neighbour_row(nl, i);
+            for (int32_t m = 0; m < nl->count[i]; m++) {
+                pair pr;
+                if (!pair_of(k, p->x, xi, row, m, &pr) || p->surface[pr.j] != SURFACE_FREE)
+                    continue;
+                sum = vec_axpy(sum, kernel_w(k, pr.r) * p->vol[pr.j], vec_load(p->normal, pr.j));
+            }
+        }
+        double norm = vec_norm(sum);
+        vec_store(smooth, i, norm > 0.0 ? vec_scale(sum, 1.0 / norm) : sum);
+    }
+    for (size_t g = p->n_fluid; g < p->n_total; g++) {
+        size_t i = (size_t)p->ghost_source[g - p->n_fluid];
+        vec_store(smooth, g,
+                  tank_mirror_vector(vec_load(smooth, i), p->ghost_walls[g - p->n_fluid]));
+    }
+}
+
 /* The curvature of the free-surface particles, from their free-surface neighbours only: the
  * outermost layer is where the normal is reliable, and deeper layers would measure the
  * larger curvature of the parallel surfaces below it. Ghosts copy their source's. */
-static void surface_curvature(const surface_tension_params *st, const kernel *k, particles *p,
-                              const neighbour_list *nl, double *kappa)
+static void surface_curvature(const surface_tension_params *st, const kernel *k, const particles *p,
+                              const neighbour_list *nl, double *const normal[DIM], double *kappa)
 {
 #pragma omp parallel for schedule(static)
     for (size_t i = 0; i < p->n_fluid; i++) {
         kappa[i] = 0.0;
         if (p->surface[i] != SURFACE_FREE) continue;
-        vec xi = vec_load(p->x, i), ni = vec_load(p->normal, i);
+        vec xi = vec_load(p->x, i), ni = vec_load(normal, i);
         curvature_sums sums = {0.0, 0.0};
         const int32_t *row = neighbour_row(nl, i);
         for (int32_t m = 0; m < nl->count[i]; m++) {
             pair pr;
             if (!pair_of(k, p->x, xi, row, m, &pr) || p->surface[pr.j] != SURFACE_FREE) continue;
-            curvature_pair(&sums, ni, vec_load(p->normal, pr.j), pr.r_ji, pr.f, p->vol[pr.j]);
+            curvature_pair(&sums, ni, vec_load(normal, pr.j), pr.r_ji, pr.f, p->vol[pr.j]);
         }
         kappa[i] = curvature_value(&sums, DIM, st->dr);
     }
@@ -203,13 +235,18 @@ static int remove_net_force(const kernel *k, particles *p, const neighbour_list 
 int surface_tension_compute(const surface_tension_params *st, const kernel *k, particles *p,
                             const neighbour_list *nl)
 {
-    double *kappa_surface = malloc((p->n_total ? p->n_total : 1) * sizeof *kappa_surface);
-    if (!kappa_surface) return -1;
+    /* per particle, fluid and ghosts: the smoothed normal and the free-surface curvature */
+    size_t n = p->n_total ? p->n_total : 1;
+    double *work = malloc((DIM + 1) * n * sizeof *work);
+    if (!work) return -1;
+    double *smooth[DIM], *kappa_surface = work + DIM * n;
+    for (int d = 0; d < DIM; d++) smooth[d] = work + (size_t)d * n;
     interface_function(st, k, p, nl);
     mirror_into_ghosts(p);
-    surface_curvature(st, k, p, nl, kappa_surface);
+    smoothed_normals(k, p, nl, smooth);
+    surface_curvature(st, k, p, nl, smooth, kappa_surface);
     band_force(st, k, p, nl, kappa_surface);
-    free(kappa_surface);
+    free(work);
     return remove_net_force(k, p, nl);
 }
 
