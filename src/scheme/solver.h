@@ -66,8 +66,8 @@ int solver_init(solver *s, const config *cfg, char *err, size_t err_len);
 void solver_free(solver *s);
 /* Sets up the step from the current state: its size min(Eq. (8), t_stop - t), the fluid
  * sorted by cell, ghosts, neighbour lists, the per-step fields (geometry, free surface,
- * shifting, diffusion), which also serve the diagnostics of the state at time t, and
- * bounce-back (tank.h). Returns 0, or -1 when out of memory. */
+ * shifting, diffusion, surface tension), which also serve the diagnostics of the state at
+ * time t, and bounce-back (tank.h). Returns 0, or -1 when out of memory. */
 int solver_prepare(solver *s, double t_stop);
 /* The prepared step: four RK4 stages. */
 void solver_advance(solver *s, double t_stop);
@@ -80,8 +80,9 @@ double solver_max_speed(solver *s);
 /* p and V = m/rho of the fluid from rho, m (the linear EOS). */
 void solver_update_eos(solver *s);
 
-/* Fills the fluid part of p: positions (i + 1/2) spacing in the liquid box, p = rho0 |g| (H - y),
- * rho from the EOS, m = rho dr^n, ids 0.. in lattice order. */
+/* Fills the fluid part of p: positions (i + 1/2) spacing in the liquid box (or in the ellipse
+ * inscribed in it, liquid.shape), p = rho0 |g| (H - y), rho from the EOS, m = rho dr^n, ids
+ * 0.. in lattice order. */
 int lattice_fill(particles *p, const config *cfg, const derived *dv);
 
 #endif
