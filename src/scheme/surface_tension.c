@@ -77,10 +77,11 @@ static void mirror_into_ghosts(particles *p)
 /* The normals of the free-surface particles, Shepard-averaged over their free-surface
  * neighbours and normalised: the curvature differentiates these. A surface cut out of a
  * lattice is a staircase whose flat steps and sharp corners make the normal jump; averaging
- * it over 2h along the surface before taking its divergence halves the noise of the
- * curvature there (rms 53 -> 34 % on a circle of R/dr = 20) and its bias (the ball's mean
- * +11.4 -> +5.7 %), and leaves a smooth surface as it was (docs/surface-tension.md). Other
- * fluid particles keep their own normal; ghosts get their source's, mirrored. */
+ * it over 2h along the surface before taking its divergence cuts the noise of the curvature
+ * there by a third (rms 53 -> 34 % on a circle of R/dr = 20) and halves its bias (the
+ * ball's mean +11.4 -> +5.7 %), and leaves a smooth surface as it was
+ * (docs/surface-tension.md). Other fluid particles keep their own normal; ghosts get their
+ * source's, mirrored. */
 static void smoothed_normals(const kernel *k, const particles *p, const neighbour_list *nl,
                              double *const smooth[DIM])
 {
