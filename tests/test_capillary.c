@@ -39,6 +39,16 @@ static void patch_case(char *text, size_t len, double length, double height, int
              resolution);
 }
 
+/* The solver of a patch_case, ready to step. */
+static void start_patch(config *cfg, solver *s, double length, double height, int resolution,
+                        double nu, double t_end)
+{
+    char text[1024], err[1024];
+    patch_case(text, sizeof text, length, height, resolution, nu, t_end);
+    if (config_load_string(cfg, text, "test", NULL, 0, err, sizeof err)) fail_msg("%s", err);
+    if (solver_init(s, cfg, err, sizeof err)) fail_msg("%s", err);
+}
+
 /* Mean pressure of the particles within R/2 of the patch's centre of mass. */
 static double core_pressure(const solver *s, double radius)
 {
@@ -67,12 +77,9 @@ static double core_pressure(const solver *s, double radius)
 static void test_laplace(void **state)
 {
     (void)state;
-    char text[1024], err[1024];
-    patch_case(text, sizeof text, 2.0 * RADIUS, 2.0 * RADIUS, 40, 1e-3, 2.0);
     config cfg;
     solver s;
-    if (config_load_string(&cfg, text, "test", NULL, 0, err, sizeof err)) fail_msg("%s", err);
-    if (solver_init(&s, &cfg, err, sizeof err)) fail_msg("%s", err);
+    start_patch(&cfg, &s, 2.0 * RADIUS, 2.0 * RADIUS, 40, 1e-3, 2.0);
     double radius = sqrt((double)s.p.n_fluid * s.dv.cell_volume / M_PI);
     double sum = 0.0, weight = 0.0;
     while (s.t < cfg.t_end) {
@@ -152,13 +159,9 @@ static void test_lamb(void **state)
 /* 200 steps of the elliptic patch on `threads` threads; the positions and velocities (SoA). */
 static void run_ellipse_steps(int threads, double *out)
 {
-    char text[1024], err[1024];
-    patch_case(text, sizeof text, 2.0 * RADIUS * sqrt(1.5), 2.0 * RADIUS / sqrt(1.5), 33, 1e-4,
-               1.0);
     config cfg;
     solver s;
-    if (config_load_string(&cfg, text, "test", NULL, 0, err, sizeof err)) fail_msg("%s", err);
-    if (solver_init(&s, &cfg, err, sizeof err)) fail_msg("%s", err);
+    start_patch(&cfg, &s, 2.0 * RADIUS * sqrt(1.5), 2.0 * RADIUS / sqrt(1.5), 33, 1e-4, 1.0);
     omp_set_num_threads(threads);
     for (int k = 0; k < 200; k++) assert_int_equal(solver_step(&s, cfg.t_end), 0);
     size_t n = s.p.n_fluid;

@@ -2,15 +2,17 @@
 #include "diag/freesurface.h"
 #include "scheme/pair.h"
 
-double freesurface_reference_normal(const kernel *k, double dr)
+void freesurface_flat_sums(const kernel *k, double dr, int depth, mat *l, vec *s)
 {
-    /* the lattice below (and beside) a particle at the origin, within the support */
+    /* the lattice below, beside and above a particle at the origin, up to the top layer
+       `depth` rows above it, within the support */
     int reach = (int)ceil(2.0 * k->h / dr);
-    mat l = mat_zero();
-    vec s = vec_zero();
+    int top = depth < reach ? depth : reach;
     double cell = pow(dr, DIM);
+    *l = mat_zero();
+    *s = vec_zero();
     for (int a = -reach; a <= reach; a++)
-        for (int b = -reach; b <= 0; b++)
+        for (int b = -reach; b <= top; b++)
 #if DIM == 3
             for (int c = -reach; c <= reach; c++)
 #else
@@ -23,10 +25,16 @@ double freesurface_reference_normal(const kernel *k, double dr)
                 r.c[1] = b * dr;
                 if (DIM == 3) r.c[DIM - 1] = c * dr;
                 double f = kernel_f(k, vec_norm(r));
-                mat_add_outer(&l, f * cell, r, r);
-                s = vec_axpy(s, f * cell, r);
+                mat_add_outer(l, f * cell, r, r);
+                *s = vec_axpy(*s, f * cell, r);
             }
-    mat l_inv;
+}
+
+double freesurface_reference_normal(const kernel *k, double dr)
+{
+    mat l, l_inv;
+    vec s;
+    freesurface_flat_sums(k, dr, 0, &l, &s);
     if (mat_inverse(&l, &l_inv) == 0.0) return 0.0;
     return vec_norm(mat_mul_vec(&l_inv, s));
 }

@@ -6,6 +6,7 @@
 #include "core/cells.h"
 #include "core/kernel.h"
 #include "core/particles.h"
+#include "core/vec.h"
 
 enum { SURFACE_INTERIOR = 0, SURFACE_REGION = 1, SURFACE_FREE = 2 };
 
@@ -17,8 +18,13 @@ enum { SURFACE_INTERIOR = 0, SURFACE_REGION = 1, SURFACE_FREE = 2 };
  * already "covered" with a 2 dr umbrella, 0.45 dr with 1.33 dr). */
 #define FREESURFACE_SCAN_OVER_DR 1.33
 
+#define freesurface_flat_sums        DIM_NAME(freesurface_flat_sums)
 #define freesurface_detect           DIM_NAME(freesurface_detect)
 #define freesurface_reference_normal DIM_NAME(freesurface_reference_normal)
+
+/* The sums L = sum r_ji (x) r_ji F V_j and s = sum grad W V_j of a particle `depth` layers
+ * below the flat top of a lattice half-space (spacing dr, cell volume dr^d). */
+void freesurface_flat_sums(const kernel *k, double dr, int depth, mat *l, vec *s);
 
 /* |L^-1 sum grad W V| of a particle on the flat surface of a lattice half-space: the typical
  * surface value of the unnormalised normal. */

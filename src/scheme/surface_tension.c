@@ -8,38 +8,25 @@
 
 #include <stdlib.h>
 
-/* |sum_j grad W V_j| of a particle `depth` layers below the top of a lattice half-space. */
-static double flat_gradient(const kernel *k, double dr, int depth)
-{
-    int reach = (int)ceil(2.0 * k->h / dr);
-    double cell = pow(dr, DIM);
-    vec s = vec_zero();
-    for (int a = -reach; a <= reach; a++)
-        for (int b = -reach; b <= reach; b++)
-            for (int c = (DIM == 3 ? -reach : 0); c <= (DIM == 3 ? reach : 0); c++) {
-                if (depth + b < 0 || (a == 0 && b == 0 && c == 0)) continue; /* above the top */
-                vec r = vec_zero();
-                r.c[0] = a * dr;
-                r.c[1] = -b * dr; /* b > 0: deeper than the particle */
-                if (DIM == 3) r.c[DIM - 1] = c * dr;
-                s = vec_axpy(s, kernel_f(k, vec_norm(r)) * cell, r);
-            }
-    return vec_norm(s);
-}
-
 surface_tension_params surface_tension_setup(const kernel *k, double dr, double sigma)
 {
     surface_tension_params st = {sigma, dr, 0.0};
     /* the layers within the support of the top one: the depth of S_F on a flat surface */
     int layers = (int)ceil(2.0 * k->h / dr) + 1;
-    for (int depth = 0; depth < layers; depth++)
-        st.flat_integral += 2.0 * flat_gradient(k, dr, depth) * dr;
+    for (int depth = 0; depth < layers; depth++) {
+        mat l;
+        vec grad_one;
+        freesurface_flat_sums(k, dr, depth, &l, &grad_one);
+        st.flat_integral += 2.0 * vec_norm(grad_one) * dr;
+    }
     return st;
 }
 
 /* delta_Sigma = 2 |sum grad W V| / flat_integral in S_F (theory §4: the factor 2 because the
  * gas half of the kernel is missing; the calibration makes its integral across a flat
- * lattice surface exactly 1), 0 in the interior. */
+ * lattice surface exactly 1), 0 in the interior. fields_geometry sums the same gradient, but
+ * before EdBC: like the shifting velocity, the force of the step weighs the corrected
+ * volumes, so the sum is taken again here, over S_F only. */
 static void interface_function(const surface_tension_params *st, const kernel *k, particles *p,
                                const neighbour_list *nl)
 {
