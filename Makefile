@@ -22,7 +22,7 @@ build: $(BUILD)/CMakeCache.txt
 run: deps
 	@$(MAKE) --no-print-directory build
 	$(BUILD)/vcsph run $(CASE) -o $(RUN_DIR)
-	@tools/plot-run $(RUN_DIR)
+	$(BUILD)/vcsph plot $(RUN_DIR)
 	@echo "vcsph: output in $(RUN_DIR) (open $(RUN_DIR)/snapshots.xmf in ParaView; plots in $(RUN_DIR)/images)"
 
 test: deps

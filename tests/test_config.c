@@ -331,7 +331,8 @@ static void test_write_has_every_key(void **state)
         if (*line == '\n') line++;
         if (*line && *line != ';' && *line != '[' && *line != '\n') n_keys++;
     }
-    assert_int_equal(n_keys, 41); /* design §3 plus numerics.density_bound and liquid.shape */
+    /* design §3 plus numerics.density_bound, liquid.shape and case.experiment_dissipation */
+    assert_int_equal(n_keys, 42);
     assert_non_null(strstr(text, "\nsound_speed      = auto ;"));
     assert_non_null(strstr(text, "\nh_over_dr        = 2 ;"));
     assert_non_null(strstr(text, "\nlength           = 1 ;"));

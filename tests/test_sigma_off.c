@@ -93,7 +93,7 @@ static void test_sap_2d(void **state)
     (void)state;
     static const char *const set[] = {"case.t_end=0.05", "numerics.resolution=8",
                                       "output.snapshot_every=0.05"};
-    check_case("sap-2d", VCSPH_SOURCE_DIR "/cases/sap.ini", set, 3);
+    check_case("sap-2d", VCSPH_SOURCE_DIR "/cases/sap-re494.ini", set, 3);
 }
 
 static void test_sway_3d(void **state)

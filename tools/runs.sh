@@ -1,6 +1,7 @@
 # runs.sh: what the validation scripts share, sourced by them (not run on its own).
-#   vcsph_run DIR [vcsph run arguments...]   runs build/vcsph into DIR with $threads threads:
-#       the terminal output goes to DIR/run.txt, the exit status to DIR/exit (3: breakdown)
+#   vcsph_run DIR [vcsph run arguments...]   runs $VCSPH (default build/vcsph) into DIR with
+#       $threads threads: the terminal output goes to DIR/run.txt, the exit status to DIR/exit
+#       (3: breakdown), "wall user system" seconds to DIR/time.txt
 #   for_each_run JOBS FUNCTION RUN...        calls FUNCTION with each RUN's words, at most
 #       JOBS at a time, and says how long they took
 #   us_per_particle_step DIR                 the run's cost from DIR/log.txt, or -
@@ -8,8 +9,9 @@ vcsph_run() {
   local dir=$1 status=0
   shift
   mkdir -p "$dir"
-  OMP_NUM_THREADS=$threads build/vcsph run "$@" -o "$dir" --quiet >"$dir/run.txt" 2>&1 ||
-    status=$?
+  local TIMEFORMAT='%R %U %S'
+  { time OMP_NUM_THREADS=$threads "${VCSPH:-build/vcsph}" run "$@" -o "$dir" --quiet \
+      >"$dir/run.txt" 2>&1 || status=$?; } 2>"$dir/time.txt"
   echo $status >"$dir/exit"
   return 0
 }

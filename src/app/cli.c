@@ -9,11 +9,15 @@ void cli_usage(FILE *out)
     fputs("usage: vcsph run CASE [--set section.key=value]... [-o DIR] [--quiet]\n"
           "       vcsph check CASE [--set section.key=value]...\n"
           "       vcsph volume SNAPSHOT...\n"
+          "       vcsph plot OUTDIR\n"
           "       vcsph --help | --version\n"
           "\n"
           "  run     run the case; outputs go to output.dir of the case (default out/<name>)\n"
           "  check   validate the case and print the derived numbers; runs nothing\n"
           "  volume  print t, eps_v1 (Eq. 12) and eps_gm (Eq. 15) of saved snapshots (CSV)\n"
+          "  plot    PNG plots of a run's output directory with gnuplot, into OUTDIR/images\n"
+          "          (volume error and eta, energy, density, liquid, dissipation, probes;\n"
+          "          the script OUTDIR/images/plot.gp can be edited and rerun)\n"
           "  --set   override any key of the case file (repeatable)\n"
           "  -o DIR  output directory\n"
           "  --quiet no terminal output (log.txt is still written)\n"
@@ -42,7 +46,8 @@ int cli_parse(int argc, char **argv, cli_args *args, char *err, int err_len)
 {
     memset(args, 0, sizeof *args);
     if (argc < 2) {
-        snprintf(err, (size_t)err_len, "vcsph: missing command (run or check); try vcsph --help");
+        snprintf(err, (size_t)err_len,
+                 "vcsph: missing command (run, check, volume or plot); try vcsph --help");
         return 2;
     }
     const char *cmd = argv[1];
@@ -62,13 +67,20 @@ int cli_parse(int argc, char **argv, cli_args *args, char *err, int err_len)
         snprintf(err, (size_t)err_len, "vcsph volume: give one or more snapshot files");
         return 2;
     }
+    if (!strcmp(cmd, "plot")) {
+        args->command = CLI_PLOT;
+        args->plot_dir = argc == 3 ? argv[2] : NULL;
+        if (args->plot_dir && args->plot_dir[0]) return 0;
+        snprintf(err, (size_t)err_len, "vcsph plot: give one output directory (vcsph plot OUTDIR)");
+        return 2;
+    }
     if (!strcmp(cmd, "run"))
         args->command = CLI_RUN;
     else if (!strcmp(cmd, "check"))
         args->command = CLI_CHECK;
     else {
-        snprintf(err, (size_t)err_len, "vcsph: unknown command '%s' (allowed: run, check, volume)",
-                 cmd);
+        snprintf(err, (size_t)err_len,
+                 "vcsph: unknown command '%s' (allowed: run, check, volume, plot)", cmd);
         return 2;
     }
     for (int k = 2; k < argc; k++) {

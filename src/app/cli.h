@@ -7,13 +7,14 @@
 
 #define CLI_MAX_OVERRIDES 64
 
-typedef enum { CLI_RUN, CLI_CHECK, CLI_VOLUME, CLI_HELP, CLI_VERSION } cli_command;
+typedef enum { CLI_RUN, CLI_CHECK, CLI_VOLUME, CLI_PLOT, CLI_HELP, CLI_VERSION } cli_command;
 
 typedef struct {
     cli_command command;
     const char *case_path; /* run, check */
     char **snapshots;      /* volume: the snapshot files */
     int n_snapshots;
+    const char *plot_dir;                     /* plot: a run's output directory */
     const char *overrides[CLI_MAX_OVERRIDES]; /* "section.key=value" from --set */
     int n_overrides;
     const char *output_dir; /* -o, NULL: output.dir of the case */

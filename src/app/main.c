@@ -1,5 +1,6 @@
 /* main: the vcsph command; the only place that decides exit statuses (design §2). */
 #include "app/cli.h"
+#include "app/plot_command.h"
 #include "app/simulation.h"
 #include "boundary/motion.h"
 #include "core/config.h"
@@ -64,6 +65,21 @@ static int volume_of_snapshots(char **paths, int n)
     return RUN_OK;
 }
 
+/* `vcsph plot`: one line naming what was written (design §1). */
+static int plot_run_dir(const char *dir)
+{
+    plot_report report;
+    char err[2048];
+    int status = plot_command_run(dir, &report, err, sizeof err);
+    if (report.warning[0]) fprintf(stderr, "%s\n", report.warning);
+    if (status) {
+        fprintf(stderr, "%s\n", err);
+        return status;
+    }
+    printf("vcsph plot: wrote %s in %s (script plot.gp)\n", report.written, report.images_dir);
+    return RUN_OK;
+}
+
 int main(int argc, char **argv)
 {
     cli_args args;
@@ -81,6 +97,7 @@ int main(int argc, char **argv)
         return RUN_OK;
     }
     if (args.command == CLI_VOLUME) return volume_of_snapshots(args.snapshots, args.n_snapshots);
+    if (args.command == CLI_PLOT) return plot_run_dir(args.plot_dir);
     static config cfg;
     if (config_load(&cfg, args.case_path, args.overrides, args.n_overrides, err, sizeof err)) {
         fprintf(stderr, "vcsph: %s\n", err);

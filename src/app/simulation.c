@@ -4,8 +4,10 @@
 #include "core/log.h"
 #include "diag/energy.h"
 #include "diag/health.h"
+#include "diag/probes.h"
 #include "diag/volume.h"
 #include "io/csv.h"
+#include "io/image.h"
 #include "io/snapshot.h"
 #include "scheme/control.h"
 #include "scheme/solver.h"
@@ -28,10 +30,17 @@ typedef struct {
     const config *cfg;
     const run_options *opt;
     char *case_text; /* resolved case.ini, also stored in every snapshot */
-    csv_file timeseries, events;
+    csv_file timeseries, events, probes_csv, dissipation;
+    probes probes;
     double energy0; /* ekin + epot + eint (+ esurf) at t = 0 */
+    /* dissipation per excitation period (theory §10): the period that ends next, and
+       ediss where it started */
+    long period;
+    double ediss_period_start;
+    double t_stop; /* the prepared step ends at or before this time */
     double mass0, v0;
-    double next_series, next_snapshot;
+    double next_series, next_snapshot, next_image;
+    int n_images;
     /* snapshot index for the XDMF file */
     int n_snapshots, cap_snapshots;
     char **snapshot_files;
@@ -83,6 +92,35 @@ static void control_step(run *r)
     if (r->s.eta_switched) event(r, "eta_switch", r->s.eta_switch_detail);
 }
 
+/* ekin + epot + eint of dg, and with surface tension the energy of the surface, sigma x its
+ * area, a state function too (theory §10; on a breakdown row, from the interface of the
+ * step's start): the energy whose change the dissipation leaves out. */
+static double stored_energy(run *r, const diagnostics *dg, double *esurf)
+{
+    solver *s = &r->s;
+    *esurf = s->pp.surface_tension ? surface_tension_energy(&s->st, &s->p, s->scratch) : 0.0;
+    return dg->ekin + dg->epot + dg->eint + *esurf;
+}
+
+/* ediss = work_in - (E(t) - E(0)) (theory §10) */
+static double dissipated_energy(run *r, double energy)
+{
+    return r->s.work_in - (energy - r->energy0);
+}
+
+/* One row of probes.csv: t, then the gauges, then the pressure probes (design §3). */
+static void write_probes_row(run *r)
+{
+    const config *cfg = r->cfg;
+    csv_file *c = &r->probes_csv;
+    csv_put(c, r->s.t);
+    for (int k = 0; k < cfg->n_gauges; k++)
+        csv_put(c, probes_gauge(&r->probes, &r->s.p, cfg->gauges[k]));
+    for (int k = 0; k < cfg->n_pressure_probes; k++)
+        csv_put(c, probes_pressure(&r->probes, &r->s.p, cfg->pressure_probes[k]));
+    csv_end_row(c);
+}
+
 /* One row of timeseries.csv (design §4). The volume columns need this step's geometry
  * (solver_prepare at the current state); a breakdown row has none and leaves them empty. */
 static void write_series_row(run *r, int with_geometry)
@@ -92,14 +130,7 @@ static void write_series_row(run *r, int with_geometry)
     if (with_geometry) volume_compute(&s->p, s->dv.cell_volume, s->scratch, &ve);
     diagnostics dg;
     diagnostics_compute(s, &dg);
-    double energy = dg.ekin + dg.epot + dg.eint;
-    /* with surface tension, the energy of the surface counts too (theory §10; on a breakdown
-       row, from the interface of the step's start) */
-    double esurf = 0.0;
-    if (s->pp.surface_tension) {
-        esurf = surface_tension_energy(&s->st, &s->p, s->scratch);
-        energy += esurf;
-    }
+    double esurf, energy = stored_energy(r, &dg, &esurf);
     if (s->step == 0) r->energy0 = energy;
     csv_file *c = &r->timeseries;
     csv_put(c, s->t);
@@ -131,7 +162,7 @@ static void write_series_row(run *r, int with_geometry)
     csv_put(c, dg.epot);
     csv_put(c, dg.eint);
     csv_put(c, s->work_in);
-    csv_put(c, s->work_in - (energy - r->energy0));
+    csv_put(c, dissipated_energy(r, energy));
     for (int d = 0; d < 3; d++) csv_put(c, dg.com[d]);
     csv_put(c, dg.xmin);
     csv_put(c, dg.xmax);
@@ -224,6 +255,54 @@ static int write_snapshot(run *r)
     return 0;
 }
 
+/* Particle images (design §1): the local volume error eps_Vi of every particle, like the
+ * paper's Figs. 13 and 21; a 3D run shows its mid-width slice, the particles within 0.6 dr of
+ * z = W/2 (one lattice layer, or the two either side of the middle). */
+#define IMAGE_PIXELS    800  /* the tank's width in the image */
+#define IMAGE_EPS_RANGE 0.02 /* colours span eps_Vi in [-2 %, +2 %] */
+
+static int write_image(run *r)
+{
+    solver *s = &r->s;
+    const particles *p = &s->p;
+    size_t n = p->n_fluid, kept = 0;
+    double *buf = malloc(3 * (n ? n : 1) * sizeof *buf);
+    if (!buf) return -1;
+    double *x = buf, *y = buf + n, *value = buf + 2 * n;
+    for (size_t i = 0; i < n; i++) {
+#if DIM == 3
+        if (fabs(p->x[2][i] - 0.5 * s->tank.size[2]) >= 0.6 * s->dv.dr) continue;
+#endif
+        x[kept] = p->x[0][i];
+        y[kept] = p->x[1][i];
+        value[kept++] = volume_local_error(p, i, s->dv.cell_volume);
+    }
+    char title[CONFIG_NAME_MAX + 32], name[64], path[CONFIG_PATH_MAX + 96], err[512];
+    snprintf(title, sizeof title, "%s%s", r->cfg->name, DIM == 3 ? " (mid-width)" : "");
+    image_frame f = {x,
+                     y,
+                     value,
+                     kept,
+                     0.5 * s->dv.dr,
+                     s->tank.size[0],
+                     s->tank.size[1],
+                     -IMAGE_EPS_RANGE,
+                     IMAGE_EPS_RANGE,
+                     "eps_Vi",
+                     title,
+                     s->t};
+    snprintf(name, sizeof name, "images/particles_%06d.png", r->n_images);
+    out_path(r, path, sizeof path, name);
+    int status = image_write_particles(path, &f, IMAGE_PIXELS, err, sizeof err);
+    free(buf);
+    if (status) {
+        log_error("vcsph: %s", err);
+        return -1;
+    }
+    r->n_images++;
+    return 0;
+}
+
 static char *resolved_case_text(const config *cfg)
 {
     char *text = NULL;
@@ -235,11 +314,33 @@ static char *resolved_case_text(const config *cfg)
     return text;
 }
 
+/* Dissipation per period needs a periodic excitation (sway or heave with a period). */
+static int has_periods(const run *r) { return r->s.dv.omega > 0.0; }
+
+static int has_probes(const config *cfg) { return cfg->n_gauges + cfg->n_pressure_probes > 0; }
+
+/* probes.csv with the header t,gauge_1..,pressure_1.. (design §3) */
+static int open_probes(run *r, const char *path)
+{
+    const config *cfg = r->cfg;
+    char header[32 + 24 * 2 * CONFIG_PROBES_MAX];
+    int len = snprintf(header, sizeof header, "t");
+    for (int k = 0; k < cfg->n_gauges; k++)
+        len += snprintf(header + len, sizeof header - (size_t)len, ",gauge_%d", k + 1);
+    for (int k = 0; k < cfg->n_pressure_probes; k++)
+        len += snprintf(header + len, sizeof header - (size_t)len, ",pressure_%d", k + 1);
+    probes_init(&r->probes, r->s.dv.h, cfg->dim == 3 ? cfg->tank_width : 1.0);
+    return csv_open(&r->probes_csv, path, header);
+}
+
 static int open_outputs(run *r)
 {
     char path[CONFIG_PATH_MAX + 64];
+    char images[CONFIG_PATH_MAX + 64];
     out_path(r, path, sizeof path, "snapshots");
-    if (make_dir(r->opt->output_dir) || make_dir(path)) {
+    out_path(r, images, sizeof images, "images");
+    if (make_dir(r->opt->output_dir) || make_dir(path) ||
+        (r->cfg->image_every > 0 && make_dir(images))) {
         log_error("vcsph: cannot create output directory %s: %s", r->opt->output_dir,
                   strerror(errno));
         return -1;
@@ -251,6 +352,15 @@ static int open_outputs(run *r)
     if (!f || fputs(r->case_text, f) == EOF || fclose(f)) return -1;
     out_path(r, path, sizeof path, "timeseries.csv");
     if (csv_open(&r->timeseries, path, timeseries_header)) return -1;
+    if (has_periods(r)) {
+        out_path(r, path, sizeof path, "dissipation.csv");
+        if (csv_open(&r->dissipation, path, "period,t_start,t_end,e_diss,power,power_norm"))
+            return -1;
+    }
+    if (has_probes(r->cfg)) {
+        out_path(r, path, sizeof path, "probes.csv");
+        if (open_probes(r, path)) return -1;
+    }
     out_path(r, path, sizeof path, "events.csv");
     return csv_open(&r->events, path, "t,event,detail");
 }
@@ -259,6 +369,8 @@ static void close_run(run *r)
 {
     csv_close(&r->timeseries);
     csv_close(&r->events);
+    csv_close(&r->probes_csv);
+    csv_close(&r->dissipation);
     for (int k = 0; k < r->n_snapshots; k++) free(r->snapshot_files[k]);
     free(r->snapshot_files);
     free(r->snapshot_times);
@@ -277,12 +389,57 @@ static int output_due(double t, double every, double *next, int last)
     return 1;
 }
 
+/* The end of the excitation period in progress, kT. */
+static double period_end(const run *r) { return (double)r->period * r->cfg->period; }
+
+/* The time the next step may not pass: t_end, or the first period end after t, on which the
+ * step lands so that each period's dissipation is measured at its exact ends. (A step that
+ * landed on kT holds t = kT exactly; the 1e-9 keeps t/T's rounding from taking kT again.) */
+static double step_stop(const run *r)
+{
+    double t_end = r->cfg->t_end, period = r->cfg->period;
+    if (!has_periods(r)) return t_end;
+    double next = (floor(r->s.t / period + 1e-9) + 1.0) * period;
+    return next < t_end ? next : t_end;
+}
+
+/* One row of dissipation.csv, at the end of period k (theory §10):
+ * e_diss(k) = ediss(kT) - ediss((k-1)T), P = e_diss / T, normalised by dW (dE_P with decay). */
+static void write_dissipation_row(run *r)
+{
+    double period = r->cfg->period, esurf;
+    diagnostics dg;
+    diagnostics_compute(&r->s, &dg);
+    double ediss = dissipated_energy(r, stored_energy(r, &dg, &esurf));
+    double e = ediss - r->ediss_period_start, norm = r->s.dv.dissipation_norm;
+    csv_file *c = &r->dissipation;
+    csv_put_long(c, r->period);
+    csv_put(c, period_end(r) - period);
+    csv_put(c, period_end(r));
+    csv_put(c, e);
+    csv_put(c, e / period);
+    if (norm > 0.0)
+        csv_put(c, e / norm);
+    else
+        csv_put_empty(c); /* no amplitude, no reference energy */
+    csv_end_row(c);
+    r->ediss_period_start = ediss;
+    r->period++;
+}
+
 /* Writes the rows and snapshots that are due at the current time. */
 static int outputs_due(run *r, int last)
 {
     const config *cfg = r->cfg;
     double t = r->s.t;
-    if (output_due(t, cfg->timeseries_every, &r->next_series, last)) write_series_row(r, 1);
+    if (output_due(t, cfg->timeseries_every, &r->next_series, last)) {
+        write_series_row(r, 1);
+        if (has_probes(cfg)) write_probes_row(r);
+    }
+    if (has_periods(r) && t >= period_end(r) * (1.0 - 1e-12)) write_dissipation_row(r);
+    if (cfg->image_every > 0 && output_due(t, cfg->image_every, &r->next_image, last) &&
+        write_image(r))
+        return -1;
     if (cfg->snapshot_every > 0 && output_due(t, cfg->snapshot_every, &r->next_snapshot, last))
         return write_snapshot(r);
     return 0;
@@ -305,7 +462,8 @@ static int breakdown(run *r)
 
 static int prepare(run *r)
 {
-    if (solver_prepare(&r->s, r->cfg->t_end) == 0) return 0;
+    r->t_stop = step_stop(r);
+    if (solver_prepare(&r->s, r->t_stop) == 0) return 0;
     progress_clear(&r->pr);
     log_error("vcsph: out of memory at step %ld", r->s.step);
     return -1;
@@ -323,7 +481,7 @@ static int time_loop(run *r)
     control_step(r);
     if (outputs_due(r, 0)) return RUN_FAILED;
     while (s->t < cfg->t_end) {
-        solver_advance(s, cfg->t_end);
+        solver_advance(s, r->t_stop);
         if (s->max_displacement > 0.5 * s->skin) {
             snprintf(msg, sizeof msg, "a particle moved %.3g m > skin/2 = %.3g m in one step",
                      s->max_displacement, 0.5 * s->skin);
@@ -375,6 +533,7 @@ int simulation_run_dim(const config *cfg, const run_options *opt)
     diagnostics dg;
     diagnostics_compute(&r.s, &dg);
     r.mass0 = dg.mass;
+    r.period = 1;
     double wall0 = progress_wall_time();
     status = time_loop(&r);
     double wall = progress_wall_time() - wall0;

@@ -124,6 +124,8 @@ static const key_spec keys[] = {
         "a name of letters, digits, '.', '_' and '-' starting with a letter or digit"),
     KEY("case", "dim", KIND_INT, 0, "2", dim, CLOSED(2, 3), NULL, "2 or 3"),
     KEY("case", "t_end", KIND_REAL, KEY_REQUIRED, NULL, t_end, POSITIVE, NULL, "a time > 0 (s)"),
+    KEY("case", "experiment_dissipation", KIND_REAL, 0, "0.0", experiment_dissipation, NON_NEGATIVE,
+        NULL, "a number >= 0: the measured P/dW (P/dE_P with motion.decay > 0); 0 = none"),
 
     KEY("tank", "length", KIND_REAL, KEY_REQUIRED, NULL, tank_length, POSITIVE, NULL,
         "a length > 0 (m)"),

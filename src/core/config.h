@@ -30,6 +30,8 @@ typedef struct {
     char name[CONFIG_NAME_MAX];
     int dim;
     double t_end;
+    double experiment_dissipation; /* measured dissipation per period, normalised as in
+                                      dissipation.csv's power_norm (0 = none); for plots */
     /* [tank] */
     double tank_length, tank_height, tank_width;
     /* [liquid] */

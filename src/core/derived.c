@@ -90,6 +90,8 @@ void derived_compute(const config *cfg, const motion *mo, derived *dv)
     double aw = cfg->amplitude * dv->omega;
     dv->d_energy = 0.5 * dv->mass_liquid * aw * aw;
     dv->d_power = periodic ? dv->d_energy / cfg->period : 0.0;
+    dv->dissipation_norm = cfg->decay > 0.0 ? dv->mass_liquid * cfg->gravity * 2.0 * cfg->amplitude
+                                            : (periodic ? dv->d_energy : 0.0);
 
     /* T1 = 2 pi / sqrt(g k tanh(k H)), k = pi / L: the first mode of linear sloshing */
     double k = M_PI / cfg->tank_length;
@@ -159,6 +161,9 @@ void derived_print(const config *cfg, const derived *dv, FILE *out)
         fprintf(out, "dE               %.6g J%s\n", dv->d_energy, per);
         fprintf(out, "dW               %.6g W%s\n", dv->d_power, per);
     }
+    if (cfg->decay > 0.0 && dv->dissipation_norm > 0.0)
+        fprintf(out, "dE_P = M_L g 2A  %.6g J%s (normalises dissipation.csv)\n",
+                dv->dissipation_norm, per);
     fprintf(out, "T1 (sloshing)    %.6g s\n", dv->t_sloshing1);
     fprintf(out, "response period  %.6g s (the adaptive eta control's average)\n",
             dv->response_period);

@@ -1,0 +1,709 @@
+/* plot_command: reads the run's CSV files only far enough to know which plots and curves have
+ * data (gnuplot stops a whole script at a plot without a single point), writes one gnuplot
+ * script that refers to the data by column name, and runs gnuplot on it. */
+#include "app/plot_command.h"
+#include "core/config.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <math.h>
+#include <stdbool.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/types.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#define PLOT_SCRIPT "plot.gp"
+/* More marks than this would hide the curves of a plot (a chattering adaptive control). */
+#define PLOT_MAX_SWITCH_MARKS 200
+
+/* ---- CSV files: which columns have values --------------------------------------------------- */
+
+typedef struct {
+    char *name;
+    long n_values; /* numeric cells (an empty cell is a quantity not computed) */
+    bool nonzero;  /* some value differs from 0 */
+    double first, min, max;
+} column_summary;
+
+typedef struct {
+    bool present; /* the file could be opened */
+    long n_rows;
+    int n_cols;
+    column_summary *cols;
+} csv_summary;
+
+/* Called with the fields of every data row, for what a summary does not keep. */
+typedef void row_hook(void *ctx, const csv_summary *s, char **fields, int n_fields);
+
+/* Splits one CSV line in place into at most max fields, removing the quotes of quoted fields
+ * (events.csv quotes details that hold commas). Returns the number of fields. */
+static int csv_split_fields(char *line, char **fields, int max)
+{
+    line[strcspn(line, "\r\n")] = '\0';
+    int n = 0;
+    char *p = line;
+    for (;;) {
+        char *out = p, *field = p;
+        bool quoted = *p == '"';
+        if (quoted) p++;
+        while (*p && (quoted || *p != ',')) {
+            if (quoted && *p == '"') {
+                if (p[1] != '"') { /* closing quote */
+                    quoted = false;
+                    p++;
+                    continue;
+                }
+                p++; /* "" stands for one quote */
+            }
+            *out++ = *p++;
+        }
+        bool more = *p == ',';
+        *out = '\0';
+        if (n < max) fields[n++] = field;
+        if (!more) return n;
+        p++;
+    }
+}
+
+static void csv_summary_free(csv_summary *s)
+{
+    for (int k = 0; k < s->n_cols; k++) free(s->cols[k].name);
+    free(s->cols);
+    memset(s, 0, sizeof *s);
+}
+
+static int csv_summary_column(const csv_summary *s, const char *name)
+{
+    for (int k = 0; k < s->n_cols; k++)
+        if (!strcmp(s->cols[k].name, name)) return k;
+    return -1;
+}
+
+/* The column named `name`, NULL when the file lacks it or has no value in it. */
+static const column_summary *csv_summary_values(const csv_summary *s, const char *name)
+{
+    int k = csv_summary_column(s, name);
+    return k >= 0 && s->cols[k].n_values > 0 ? &s->cols[k] : NULL;
+}
+
+static int csv_summary_header(csv_summary *s, char *line)
+{
+    int max = (int)strlen(line) + 1; /* no more fields than characters */
+    char **fields = malloc((size_t)max * sizeof *fields);
+    if (!fields) return -1;
+    int n = csv_split_fields(line, fields, max);
+    s->cols = calloc((size_t)n + 1, sizeof *s->cols); /* + 1: never calloc(0) */
+    int status = s->cols ? 0 : -1;
+    for (int k = 0; k < n && !status; k++) {
+        s->cols[k].name = strdup(fields[k]);
+        if (!s->cols[k].name) status = -1;
+        s->n_cols = k + 1;
+    }
+    free(fields);
+    return status;
+}
+
+static void csv_summary_add(csv_summary *s, char **fields, int n_fields)
+{
+    for (int k = 0; k < n_fields && k < s->n_cols; k++) {
+        char *end;
+        double v = strtod(fields[k], &end);
+        /* empty, text, or nan/inf that gnuplot would not draw either */
+        if (end == fields[k] || *end || !isfinite(v)) continue;
+        column_summary *c = &s->cols[k];
+        if (c->n_values++ == 0) c->first = c->min = c->max = v;
+        c->min = v < c->min ? v : c->min;
+        c->max = v > c->max ? v : c->max;
+        c->nonzero |= v != 0.0;
+    }
+    s->n_rows++;
+}
+
+/* Reads the header row and summarises the data rows. Returns 0; -1 with errno when the file
+ * cannot be opened or read (s->present tells which). */
+static int csv_summary_read(const char *path, csv_summary *s, row_hook *hook, void *ctx)
+{
+    memset(s, 0, sizeof *s);
+    FILE *f = fopen(path, "r");
+    if (!f) return -1;
+    s->present = true;
+    char *line = NULL, **fields = NULL;
+    size_t cap = 0;
+    int status = 0;
+    if (getline(&line, &cap, f) > 0) status = csv_summary_header(s, line);
+    if (!status) fields = malloc((size_t)(s->n_cols + 1) * sizeof *fields);
+    if (!fields) status = -1;
+    while (!status && getline(&line, &cap, f) > 0) {
+        if (line[strspn(line, "\r\n")] == '\0') continue; /* blank line */
+        int n = csv_split_fields(line, fields, s->n_cols + 1);
+        csv_summary_add(s, fields, n);
+        if (hook) hook(ctx, s, fields, n);
+    }
+    if (ferror(f)) status = -1;
+    int saved = errno;
+    free(fields);
+    free(line);
+    fclose(f);
+    errno = saved;
+    return status;
+}
+
+/* ---- what the plots are drawn from ---------------------------------------------------------- */
+
+typedef struct {
+    char title_name[CONFIG_NAME_MAX]; /* the case name, else the directory's name */
+    bool has_case;
+    config cfg; /* case.ini, when has_case */
+    csv_summary series, dissipation, probes;
+    double switch_t[PLOT_MAX_SWITCH_MARKS]; /* times of the eta_switch events */
+    int n_switch;
+} plot_inputs;
+
+static void record_switch(void *ctx, const csv_summary *s, char **fields, int n_fields)
+{
+    plot_inputs *in = ctx;
+    int t = csv_summary_column(s, "t"), event = csv_summary_column(s, "event");
+    if (t < 0 || event < 0 || t >= n_fields || event >= n_fields) return;
+    if (strcmp(fields[event], "eta_switch") || in->n_switch == PLOT_MAX_SWITCH_MARKS) return;
+    char *end;
+    double v = strtod(fields[t], &end);
+    if (end != fields[t] && !*end && isfinite(v)) in->switch_t[in->n_switch++] = v;
+}
+
+/* dir/name, without a doubled slash when dir ends in one */
+static int path_join(char *buf, size_t size, const char *dir, const char *name, char *err,
+                     size_t err_len)
+{
+    int len = (int)strlen(dir);
+    while (len > 1 && dir[len - 1] == '/') len--;
+    if ((size_t)snprintf(buf, size, "%.*s/%s", len, dir, name) < size) return PLOT_OK;
+    snprintf(err, err_len, "vcsph plot: the path %s/%s is too long", dir, name);
+    return PLOT_BAD_INPUT;
+}
+
+/* The last component of dir, for titles when case.ini is missing. */
+static void plot_name_from_dir(const char *dir, char *name, size_t size)
+{
+    size_t len = strlen(dir);
+    while (len > 1 && dir[len - 1] == '/') len--;
+    size_t start = len;
+    while (start > 0 && dir[start - 1] != '/') start--;
+    snprintf(name, size, "%.*s", (int)(len - start), dir + start);
+}
+
+/* case.ini gives the name, motion.decay and the experiment; a run without it, or with one
+ * that this vcsph no longer reads, is still plotted. */
+static void plot_read_case(const char *dir, plot_inputs *in, plot_report *report)
+{
+    char path[4096], err[1024];
+    plot_name_from_dir(dir, in->title_name, sizeof in->title_name);
+    if (path_join(path, sizeof path, dir, "case.ini", err, sizeof err)) return;
+    if (access(path, F_OK)) return;
+    /* the tank motion is not plotted: dropping it spares looking for a motion table */
+    const char *no_motion = "motion.type=none";
+    if (config_load(&in->cfg, path, &no_motion, 1, err, sizeof err)) {
+        snprintf(report->warning, sizeof report->warning,
+                 "vcsph plot: plotting without the case: %s", err);
+        return;
+    }
+    in->has_case = true;
+    snprintf(in->title_name, sizeof in->title_name, "%s", in->cfg.name);
+}
+
+/* An optional file that is missing is simply not plotted. */
+static int plot_read_optional(const char *dir, const char *name, csv_summary *s, row_hook *hook,
+                              void *ctx, char *err, size_t err_len)
+{
+    char path[4096];
+    int status = path_join(path, sizeof path, dir, name, err, err_len);
+    if (status) return status;
+    if (csv_summary_read(path, s, hook, ctx) && s->present) {
+        snprintf(err, err_len, "vcsph plot: cannot read %s: %s", path, strerror(errno));
+        return PLOT_FAILED;
+    }
+    return PLOT_OK;
+}
+
+/* The key columns of volume.png, energy.png, density.png and liquid.png: one is enough. */
+static bool plot_series_drawable(const csv_summary *series)
+{
+    return csv_summary_values(series, "eps_v1") || csv_summary_values(series, "ekin") ||
+           csv_summary_values(series, "rho_min") || csv_summary_values(series, "com_x");
+}
+
+/* timeseries.csv is the one file a plot needs: without it, or its rows, the input is bad. */
+static int plot_read_inputs(const char *dir, plot_inputs *in, plot_report *report, char *err,
+                            size_t err_len)
+{
+    char path[4096];
+    int status = path_join(path, sizeof path, dir, "timeseries.csv", err, err_len);
+    if (status) return status;
+    if (csv_summary_read(path, &in->series, NULL, NULL)) {
+        snprintf(err, err_len, "vcsph plot: cannot read %s: %s", path, strerror(errno));
+        return in->series.present ? PLOT_FAILED : PLOT_BAD_INPUT;
+    }
+    if (in->series.n_rows == 0 || csv_summary_column(&in->series, "t") < 0) {
+        snprintf(err, err_len, "vcsph plot: %s has %s", path,
+                 in->series.n_rows ? "no column 't'" : "no rows to plot");
+        return PLOT_BAD_INPUT;
+    }
+    if (!plot_series_drawable(&in->series)) {
+        snprintf(err, err_len,
+                 "vcsph plot: %s has none of the columns eps_v1, ekin, rho_min, com_x with a value",
+                 path);
+        return PLOT_BAD_INPUT;
+    }
+    plot_read_case(dir, in, report);
+    csv_summary events;
+    status = plot_read_optional(dir, "events.csv", &events, record_switch, in, err, err_len);
+    csv_summary_free(&events);
+    if (!status)
+        status =
+            plot_read_optional(dir, "dissipation.csv", &in->dissipation, NULL, NULL, err, err_len);
+    if (!status)
+        status = plot_read_optional(dir, "probes.csv", &in->probes, NULL, NULL, err, err_len);
+    return status;
+}
+
+static void plot_inputs_free(plot_inputs *in)
+{
+    csv_summary_free(&in->series);
+    csv_summary_free(&in->dissipation);
+    csv_summary_free(&in->probes);
+}
+
+/* ---- the gnuplot script --------------------------------------------------------------------- */
+
+/* A gnuplot single-quoted string: nothing is special inside it but the quote, written twice. */
+static void gp_put_quoted(FILE *f, const char *s)
+{
+    fputc('\'', f);
+    for (; *s; s++) {
+        if (*s == '\'') fputc('\'', f);
+        if (*s != '\n' && *s != '\r') fputc(*s, f);
+    }
+    fputc('\'', f);
+}
+
+/* Each plot starts from gnuplot's defaults, so that a block can be edited or moved alone. */
+static void gp_begin_plot(FILE *f, const plot_inputs *in, const char *png, int height,
+                          const char *what, const char *ylabel)
+{
+    fprintf(f, "\n# ---- %s\nreset\n", png);
+    fprintf(f, "set terminal pngcairo size 1000,%d font ',11'\n", height);
+    fputs("set encoding utf8\n" /* the Greek letters of the labels */
+          "set datafile separator ','\n"
+          "set datafile columnheaders\n"
+          "set datafile missing ''\n"
+          "set grid\n"
+          "set key below\n" /* never over a curve */
+          "set xlabel 't (s)'\n",
+          f);
+    fprintf(f, "set output '%s'\nset title ", png);
+    char title[CONFIG_NAME_MAX + 256];
+    snprintf(title, sizeof title, "%s: %s", in->title_name, what);
+    gp_put_quoted(f, title);
+    fputs(" noenhanced\nset ylabel ", f);
+    gp_put_quoted(f, ylabel);
+    fputc('\n', f);
+}
+
+typedef struct {
+    const char *column;
+    const char *prefix, *suffix; /* around column(NAME), e.g. "100*" for percent */
+    const char *style;           /* after "with" */
+    const char *title;           /* enhanced text */
+} curve;
+
+/* Starts or continues a plot command with one curve of `data` against its column t. */
+static void gp_put_curve(FILE *f, int *n_plotted, const char *data, const curve *c)
+{
+    fputs(*n_plotted ? ", \\\n     " : "plot ", f);
+    if (*n_plotted) data = "";
+    gp_put_quoted(f, data);
+    fprintf(f, " using 't':(%scolumn('%s')%s) with %s title ", c->prefix, c->column, c->suffix,
+            c->style);
+    gp_put_quoted(f, c->title);
+    ++*n_plotted;
+}
+
+/* The curves whose columns have values; returns how many were plotted (0: no plot command). */
+static int gp_put_curves(FILE *f, const char *data, const csv_summary *s, const curve *curves,
+                         int n)
+{
+    int n_plotted = 0;
+    for (int k = 0; k < n; k++)
+        if (csv_summary_values(s, curves[k].column)) gp_put_curve(f, &n_plotted, data, &curves[k]);
+    return n_plotted;
+}
+
+static const char series_data[] = "../timeseries.csv";
+
+/* The paper's Fig. 9: eps_V in percent, with eta on a second axis and its switches marked. */
+static bool gp_plot_volume(FILE *f, const plot_inputs *in)
+{
+    if (!csv_summary_values(&in->series, "eps_v1")) return false;
+    gp_begin_plot(f, in, "volume.png", 600, "volume error (Eq. 12) and the ALE switch η",
+                  "volume error (%)");
+    const curve curves[] = {
+        {"eps_v1", "100*", "", "lines lw 2", "ε_V^{(1)}"},
+        {"eps_gm", "100*", "", "linespoints lw 2 pt 7 ps 0.6", "ε_{GM} (Eq. 15)"},
+        {"eta", "", "", "lines lw 1 lc rgb 'black' axes x1y2", "η"},
+    };
+    bool has_eta = csv_summary_values(&in->series, "eta") != NULL;
+    if (has_eta)
+        fputs("set ytics nomirror\nset y2tics 0, 0.25, 1\nset y2range [-0.05:1.05]\n"
+              "set y2label 'η'\n",
+              f);
+    for (int k = 0; k < in->n_switch; k++)
+        fprintf(f, "set arrow from %.10g, graph 0 to %.10g, graph 1 nohead dt 2 lc rgb 'gray40'\n",
+                in->switch_t[k], in->switch_t[k]);
+    gp_put_curves(f, series_data, &in->series, curves, has_eta ? 3 : 2);
+    if (in->n_switch)
+        fputs(", \\\n     keyentry with lines dt 2 lc rgb 'gray40' title 'η switch'", f);
+    fputc('\n', f);
+    return true;
+}
+
+static bool gp_plot_energy(FILE *f, const plot_inputs *in)
+{
+    const column_summary *epot = csv_summary_values(&in->series, "epot");
+    if (!csv_summary_values(&in->series, "ekin")) return false;
+    const char *unit = !in->has_case      ? "energy (J; per unit width in 2D)"
+                       : in->cfg.dim == 2 ? "energy per unit width (J/m)"
+                                          : "energy (J)";
+    gp_begin_plot(f, in, "energy.png", 600, "energy budget, E_pot from its initial value", unit);
+    /* E_pot(0) of the run, so that all curves start near 0 */
+    fprintf(f, "EPOT0 = %.15g\n", epot ? epot->first : 0.0);
+    const curve curves[] = {
+        {"ekin", "", "", "lines lw 2", "E_{kin}"},
+        {"epot", "", " - EPOT0", "lines lw 2", "E_{pot} - E_{pot}(0)"},
+        {"eint", "", "", "lines lw 2", "E_{int}"},
+        {"work_in", "", "", "lines lw 2", "W_{in}"},
+        {"ediss", "", "", "lines lw 2", "E_{diss}"},
+        {"esurf", "", "", "lines lw 2", "E_{surf}"},
+    };
+    const column_summary *esurf = csv_summary_values(&in->series, "esurf");
+    /* esurf is 0 throughout without surface tension: no flat line in the key then */
+    gp_put_curves(f, series_data, &in->series, curves, esurf && esurf->nonzero ? 6 : 5);
+    fputc('\n', f);
+    return true;
+}
+
+static bool gp_plot_density(FILE *f, const plot_inputs *in)
+{
+    if (!csv_summary_values(&in->series, "rho_min")) return false;
+    gp_begin_plot(f, in, "density.png", 600, "density extremes", "density (kg/m^3)");
+    const curve curves[] = {
+        {"rho_min", "", "", "lines lw 2", "ρ_{min}"},
+        {"rho_max", "", "", "lines lw 2", "ρ_{max}"},
+    };
+    gp_put_curves(f, series_data, &in->series, curves, 2);
+    fputc('\n', f);
+    return true;
+}
+
+static bool gp_plot_liquid(FILE *f, const plot_inputs *in)
+{
+    if (!csv_summary_values(&in->series, "com_x")) return false;
+    gp_begin_plot(f, in, "liquid.png", 600, "liquid centre of mass and extent", "position (m)");
+    const curve curves[] = {
+        {"com_x", "", "", "lines lw 2", "x_{com}"},
+        {"com_y", "", "", "lines lw 2", "y_{com}"},
+        {"ymax", "", "", "lines lw 2", "y_{max}"},
+    };
+    gp_put_curves(f, series_data, &in->series, curves, 3);
+    fputc('\n', f);
+    return true;
+}
+
+/* From 0, so that periods compare by their size; never an empty range (one period, or all of
+ * them equal to the experiment). */
+static void gp_dissipation_yrange(FILE *f, const column_summary *power, double experiment)
+{
+    double lo = power->min < 0.0 ? power->min : 0.0;
+    double hi = power->max > experiment ? power->max : experiment;
+    double pad = hi > lo ? 0.1 * (hi - lo) : 1.0;
+    fprintf(f, "set yrange [%.10g:%.10g]\n", lo < 0.0 ? lo - pad : 0.0, hi + pad);
+}
+
+/* power_norm per excitation period, against the measured value when the case gives one. */
+static bool gp_plot_dissipation(FILE *f, const plot_inputs *in)
+{
+    const column_summary *period = csv_summary_values(&in->dissipation, "period");
+    const column_summary *power = csv_summary_values(&in->dissipation, "power_norm");
+    if (!period || !power) return false;
+    bool decaying = in->has_case && in->cfg.decay > 0.0;
+    double experiment = in->has_case ? in->cfg.experiment_dissipation : 0.0;
+    gp_begin_plot(f, in, "dissipation.png", 600, "slosh dissipation per excitation period",
+                  decaying ? "P / dE_P" : "P / dW");
+    fputs("set xlabel 'excitation period'\n", f);
+    /* half a period of margin, so that a single period is not an empty x range */
+    fprintf(f, "set xrange [%.10g:%.10g]\n", period->min - 0.5, period->max + 0.5);
+    if (period->max - period->min < 20) fputs("set xtics 1\n", f);
+    gp_dissipation_yrange(f, power, experiment);
+    fputs("plot '../dissipation.csv' using 'period':(column('power_norm')) "
+          "with linespoints lw 2 pt 7 title 'vcsph'",
+          f);
+    if (experiment > 0.0)
+        fprintf(f, ", \\\n     %.10g with lines dt 2 lw 2 lc rgb 'black' title 'experiment'",
+                experiment);
+    fputc('\n', f);
+    return true;
+}
+
+/* "x = 0.1 m" for gauge_1, "(x, y) = (0.5, 0.1) m" for pressure_1, from case.ini */
+static void probe_title(const plot_inputs *in, const char *column, char *buf, size_t size)
+{
+    int k = 0;
+    bool gauge = sscanf(column, "gauge_%d", &k) == 1;
+    bool pressure = !gauge && sscanf(column, "pressure_%d", &k) == 1;
+    const config *c = &in->cfg;
+    if (in->has_case && gauge && k >= 1 && k <= c->n_gauges)
+        snprintf(buf, size, "gauge %d: x = %g m", k, c->gauges[k - 1]);
+    else if (in->has_case && pressure && k >= 1 && k <= c->n_pressure_probes && c->dim == 2)
+        snprintf(buf, size, "p %d: (x, y) = (%g, %g) m", k, c->pressure_probes[k - 1][0],
+                 c->pressure_probes[k - 1][1]);
+    else if (in->has_case && pressure && k >= 1 && k <= c->n_pressure_probes)
+        snprintf(buf, size, "p %d: (x, y, z) = (%g, %g, %g) m", k, c->pressure_probes[k - 1][0],
+                 c->pressure_probes[k - 1][1], c->pressure_probes[k - 1][2]);
+    else
+        snprintf(buf, size, "%s %d", gauge ? "gauge" : "p", k);
+}
+
+/* One panel: the columns of probes.csv whose names start with `prefix`. */
+static void gp_probe_panel(FILE *f, const plot_inputs *in, const char *prefix, const char *ylabel)
+{
+    fputs("set ylabel ", f);
+    gp_put_quoted(f, ylabel);
+    fputc('\n', f);
+    int n_plotted = 0;
+    for (int k = 0; k < in->probes.n_cols; k++) {
+        const column_summary *c = &in->probes.cols[k];
+        if (strncmp(c->name, prefix, strlen(prefix)) || !c->n_values) continue;
+        char title[256];
+        probe_title(in, c->name, title, sizeof title);
+        /* column names come from the file: quoted like any other string */
+        fputs(n_plotted++ ? ", \\\n     '' using 't':(column("
+                          : "plot '../probes.csv' using 't':(column(",
+              f);
+        gp_put_quoted(f, c->name);
+        fputs(")) with lines lw 2 title ", f);
+        gp_put_quoted(f, title);
+    }
+    fputc('\n', f);
+}
+
+static bool probes_have(const plot_inputs *in, const char *prefix)
+{
+    for (int k = 0; k < in->probes.n_cols; k++)
+        if (!strncmp(in->probes.cols[k].name, prefix, strlen(prefix)) &&
+            in->probes.cols[k].n_values)
+            return true;
+    return false;
+}
+
+/* Gauges and pressures have different units: one panel each. */
+static bool gp_plot_probes(FILE *f, const plot_inputs *in)
+{
+    bool gauges = probes_have(in, "gauge_"), pressures = probes_have(in, "pressure_");
+    if ((!gauges && !pressures) || csv_summary_column(&in->probes, "t") < 0) return false;
+    gp_begin_plot(f, in, "probes.png", gauges && pressures ? 900 : 600, "probes", "");
+    /* the panels share the title of the page */
+    fprintf(f, "set multiplot layout %d,1 title ", gauges + pressures);
+    char title[CONFIG_NAME_MAX + 16];
+    snprintf(title, sizeof title, "%s: probes", in->title_name);
+    gp_put_quoted(f, title);
+    fputs(" noenhanced\nunset title\n", f);
+    if (gauges) gp_probe_panel(f, in, "gauge_", "liquid height (m)");
+    if (pressures) gp_probe_panel(f, in, "pressure_", "pressure (Pa)");
+    fputs("unset multiplot\n", f);
+    return true;
+}
+
+typedef bool plot_writer(FILE *f, const plot_inputs *in);
+
+static const struct {
+    const char *png;
+    plot_writer *write;
+} plots[] = {
+    {"volume.png", gp_plot_volume},           {"energy.png", gp_plot_energy},
+    {"density.png", gp_plot_density},         {"liquid.png", gp_plot_liquid},
+    {"dissipation.png", gp_plot_dissipation}, {"probes.png", gp_plot_probes},
+};
+#define N_PLOTS (int)(sizeof plots / sizeof plots[0])
+
+/* Writes the script; drawn[k] tells whether plots[k] is in it. */
+static int plot_write_script(const char *path, const plot_inputs *in, bool drawn[N_PLOTS],
+                             char *err, size_t err_len)
+{
+    FILE *f = fopen(path, "w");
+    if (!f) {
+        snprintf(err, err_len, "vcsph plot: cannot write %s: %s", path, strerror(errno));
+        return PLOT_FAILED;
+    }
+    fputs("# Plots of a vcsph run, written by `vcsph plot`; rerun with: gnuplot plot.gp\n"
+          "# in this folder: the data files are referred to as ../NAME.csv\n",
+          f);
+    for (int k = 0; k < N_PLOTS; k++) drawn[k] = plots[k].write(f, in);
+    if (fclose(f)) {
+        snprintf(err, err_len, "vcsph plot: cannot write %s: %s", path, strerror(errno));
+        return PLOT_FAILED;
+    }
+    return PLOT_OK;
+}
+
+/* ---- gnuplot -------------------------------------------------------------------------------- */
+
+/* Runs `gnuplot plot.gp` in dir without a shell (no quoting of the directory's name). A pipe
+ * closed on exec tells a missing gnuplot apart from a gnuplot that failed. */
+static int plot_run_gnuplot(const char *dir, char *err, size_t err_len)
+{
+    int report[2];
+    if (pipe(report) || fcntl(report[1], F_SETFD, FD_CLOEXEC)) {
+        snprintf(err, err_len, "vcsph plot: cannot run gnuplot: %s", strerror(errno));
+        return PLOT_FAILED;
+    }
+    fflush(NULL);
+    pid_t pid = fork();
+    if (pid == 0) {
+        close(report[0]);
+        int why[2] = {0, 0}; /* {0 chdir / 1 exec, errno} */
+        if (chdir(dir) == 0) {
+            execlp("gnuplot", "gnuplot", PLOT_SCRIPT, (char *)NULL);
+            why[0] = 1;
+        }
+        why[1] = errno;
+        if (write(report[1], why, sizeof why) < 0) _exit(127);
+        _exit(127);
+    }
+    close(report[1]);
+    if (pid < 0) {
+        close(report[0]);
+        snprintf(err, err_len, "vcsph plot: cannot run gnuplot: %s", strerror(errno));
+        return PLOT_FAILED;
+    }
+    int why[2];
+    ssize_t got;
+    while ((got = read(report[0], why, sizeof why)) < 0 && errno == EINTR) continue;
+    close(report[0]);
+    int status;
+    while (waitpid(pid, &status, 0) < 0 && errno == EINTR) continue;
+    if (got == (ssize_t)sizeof why) {
+        if (why[0] == 1 && why[1] == ENOENT)
+            snprintf(err, err_len,
+                     "vcsph plot: gnuplot is not installed (not found in PATH); "
+                     "the script is %s/%s",
+                     dir, PLOT_SCRIPT);
+        else
+            snprintf(err, err_len, "vcsph plot: cannot run gnuplot in %s: %s", dir,
+                     strerror(why[1]));
+        return PLOT_FAILED;
+    }
+    if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return PLOT_OK;
+    if (WIFEXITED(status))
+        snprintf(err, err_len, "vcsph plot: gnuplot failed with exit status %d on %s/%s",
+                 WEXITSTATUS(status), dir, PLOT_SCRIPT);
+    else
+        snprintf(err, err_len, "vcsph plot: gnuplot was killed by signal %d on %s/%s",
+                 WTERMSIG(status), dir, PLOT_SCRIPT);
+    return PLOT_FAILED;
+}
+
+/* ---- the command ---------------------------------------------------------------------------- */
+
+static int plot_check_dir(const char *dir, char *err, size_t err_len)
+{
+    struct stat st;
+    if (stat(dir, &st)) {
+        snprintf(err, err_len, "vcsph plot: no run directory %s: %s", dir, strerror(errno));
+        return PLOT_BAD_INPUT;
+    }
+    if (!S_ISDIR(st.st_mode)) {
+        snprintf(err, err_len, "vcsph plot: %s is not a directory (give a run's output directory)",
+                 dir);
+        return PLOT_BAD_INPUT;
+    }
+    return PLOT_OK;
+}
+
+static int plot_make_images_dir(const char *dir, plot_report *report, char *err, size_t err_len)
+{
+    int status =
+        path_join(report->images_dir, sizeof report->images_dir, dir, "images", err, err_len);
+    if (status) return status;
+    if (mkdir(report->images_dir, 0777) && errno != EEXIST) {
+        snprintf(err, err_len, "vcsph plot: cannot create %s: %s", report->images_dir,
+                 strerror(errno));
+        return PLOT_FAILED;
+    }
+    return PLOT_OK;
+}
+
+/* Old plots are removed first, so that a plot gnuplot did not draw is noticed. */
+static int plot_remove_old(const plot_report *report, const bool drawn[N_PLOTS], char *err,
+                           size_t err_len)
+{
+    for (int k = 0; k < N_PLOTS; k++) {
+        char path[4200];
+        if (!drawn[k]) continue;
+        if (path_join(path, sizeof path, report->images_dir, plots[k].png, err, err_len))
+            return PLOT_BAD_INPUT;
+        if (remove(path) && errno != ENOENT) {
+            snprintf(err, err_len, "vcsph plot: cannot replace %s: %s", path, strerror(errno));
+            return PLOT_FAILED;
+        }
+    }
+    return PLOT_OK;
+}
+
+static int plot_check_written(plot_report *report, const bool drawn[N_PLOTS], char *err,
+                              size_t err_len)
+{
+    report->written[0] = '\0';
+    for (int k = 0; k < N_PLOTS; k++) {
+        char path[4200];
+        struct stat st;
+        if (!drawn[k]) continue;
+        snprintf(path, sizeof path, "%s/%s", report->images_dir, plots[k].png);
+        if (stat(path, &st) || st.st_size == 0) {
+            snprintf(err, err_len, "vcsph plot: gnuplot did not write %s (script %s/%s)", path,
+                     report->images_dir, PLOT_SCRIPT);
+            return PLOT_FAILED;
+        }
+        size_t used = strlen(report->written);
+        snprintf(report->written + used, sizeof report->written - used, "%s%s", used ? " " : "",
+                 plots[k].png);
+    }
+    return PLOT_OK;
+}
+
+int plot_command_run(const char *dir, plot_report *report, char *err, size_t err_len)
+{
+    memset(report, 0, sizeof *report);
+    int status = plot_check_dir(dir, err, err_len);
+    if (status) return status;
+    plot_inputs *in = calloc(1, sizeof *in);
+    if (!in) {
+        snprintf(err, err_len, "vcsph plot: out of memory");
+        return PLOT_FAILED;
+    }
+    bool drawn[N_PLOTS];
+    char script[4200];
+    /* bad input is found before anything is written */
+    status = plot_read_inputs(dir, in, report, err, err_len);
+    if (!status) status = plot_make_images_dir(dir, report, err, err_len);
+    if (!status)
+        status = path_join(script, sizeof script, report->images_dir, PLOT_SCRIPT, err, err_len);
+    if (!status) status = plot_write_script(script, in, drawn, err, err_len);
+    plot_inputs_free(in);
+    free(in);
+    if (!status) status = plot_remove_old(report, drawn, err, err_len);
+    if (!status) status = plot_run_gnuplot(report->images_dir, err, err_len);
+    if (!status) status = plot_check_written(report, drawn, err, err_len);
+    return status;
+}

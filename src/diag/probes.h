@@ -1,0 +1,39 @@
+/* probes: wave gauges and pressure probes (design §3 [probes]), SPH interpolations of the
+ * particle state at fixed points of the tank frame, for probes.csv. */
+#ifndef VCSPH_PROBES_H
+#define VCSPH_PROBES_H
+
+#include "boundary/tank.h"
+#include "core/config.h"
+#include "core/kernel.h"
+#include "core/particles.h"
+
+/* the projected kernel is tabulated at this many intervals over [0, 2h] */
+#define PROBES_TABLE 1024
+
+typedef struct {
+    kernel k;
+    double centre_z;                    /* 3D: the gauges' line is at mid-width */
+    double projected[PROBES_TABLE + 2]; /* P(s) = integral of W(sqrt(s^2 + y^2)) over y */
+} probes;
+
+#define probes_init     DIM_NAME(probes_init)
+#define probes_gauge    DIM_NAME(probes_gauge)
+#define probes_pressure DIM_NAME(probes_pressure)
+
+void probes_init(probes *pr, double h, double tank_width);
+
+/* Liquid depth at x (m): the integral, along the vertical line at x (3D: at mid-width), of
+ * the SPH liquid fraction sum_j W V_j over the tank height. The kernel's integral along y is
+ * the projected kernel P, so the depth is sum_j V_j P(distance of j to the line) over the
+ * fluid and the ghosts of the side walls (those of the bottom and the roof lie outside the
+ * tank's height). For a single-valued surface this is its height above the bottom; drops and
+ * overhangs on the line add their thickness, as on a capacitance gauge. Needs the ghosts. */
+double probes_gauge(const probes *pr, const particles *p, double x);
+
+/* Pressure at the point x (Pa): the Shepard-normalised SPH interpolation
+ * sum_j p_j W_j V_j / sum_j W_j V_j over the fluid and all ghosts (so a probe on a wall
+ * reads the hydrostatic continuation of the ghosts); 0 where no particle is within 2h. */
+double probes_pressure(const probes *pr, const particles *p, const double x[3]);
+
+#endif
