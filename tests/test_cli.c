@@ -13,7 +13,6 @@
 #include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
-#include <ftw.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -26,6 +25,7 @@
 
 #include "check.h"
 #include "table.h"
+#include "temp_dir.h"
 
 #ifndef VCSPH_BINARY
 #error "VCSPH_BINARY must name the vcsph executable (CMake defines it)"
@@ -45,9 +45,7 @@ static int setup(void **state)
     fixture *fx = calloc(1, sizeof *fx);
     if (!fx) return -1;
     fx->row = *state;
-    const char *tmp = getenv("TMPDIR");
-    snprintf(fx->dir, sizeof fx->dir, "%s/vcsph-cli-XXXXXX", tmp && *tmp ? tmp : "/tmp");
-    if (!mkdtemp(fx->dir)) {
+    if (temp_dir_make(fx->dir, sizeof fx->dir, "vcsph-cli") != 0) {
         free(fx);
         return -1;
     }
@@ -55,16 +53,10 @@ static int setup(void **state)
     return 0;
 }
 
-static int remove_entry(const char *path, const struct stat *st, int flag, struct FTW *ftw)
-{
-    (void)st, (void)flag, (void)ftw;
-    return remove(path);
-}
-
 static int teardown(void **state)
 {
     fixture *fx = *state;
-    int rc = nftw(fx->dir, remove_entry, 16, FTW_DEPTH | FTW_PHYS);
+    int rc = temp_dir_remove(fx->dir);
     free(fx);
     return rc;
 }

@@ -2,7 +2,7 @@
  * pixels where the documented mapping (io/image.h) puts the particles, the outline and the
  * colour bar; bad input is refused without leaving a file behind. */
 #ifndef _POSIX_C_SOURCE
-#define _POSIX_C_SOURCE 200809L /* mkdtemp */
+#define _POSIX_C_SOURCE 200809L /* mkdtemp, in temp_dir.h */
 #endif
 
 #include <setjmp.h>
@@ -12,25 +12,24 @@
 
 #include <cmocka.h>
 
-#include <dirent.h>
 #include <math.h>
 #include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
-#include <unistd.h>
 
 #include "io/image.h"
 
 #include "check.h"
 #include "png_read.h"
+#include "temp_dir.h"
 
 /* ---------------------------------------------------------------------------------------- */
-/* Fixture: a fresh directory under /tmp per test, removed afterwards                         */
+/* Fixture: a fresh directory under $TMPDIR (else /tmp) per test, removed afterwards          */
 
 typedef struct {
-    char dir[64];
+    char dir[256];
     char path[512]; /* scratch for path_in */
 } fixture;
 
@@ -38,8 +37,7 @@ static int setup(void **state)
 {
     fixture *fx = calloc(1, sizeof *fx);
     if (!fx) return -1;
-    strcpy(fx->dir, "/tmp/vcsph_image_XXXXXX");
-    if (!mkdtemp(fx->dir)) {
+    if (temp_dir_make(fx->dir, sizeof fx->dir, "vcsph-image") != 0) {
         free(fx);
         return -1;
     }
@@ -50,19 +48,9 @@ static int setup(void **state)
 static int teardown(void **state)
 {
     fixture *fx = *state;
-    DIR *d = opendir(fx->dir);
-    if (d) {
-        char p[512];
-        for (struct dirent *e; (e = readdir(d));) {
-            if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0) continue;
-            snprintf(p, sizeof p, "%s/%s", fx->dir, e->d_name);
-            unlink(p);
-        }
-        closedir(d);
-    }
-    rmdir(fx->dir);
+    int rc = temp_dir_remove(fx->dir);
     free(fx);
-    return 0;
+    return rc;
 }
 
 static const char *path_in(fixture *fx, const char *name)

@@ -11,7 +11,6 @@
 
 #include <errno.h>
 #include <fcntl.h>
-#include <ftw.h>
 #include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -21,6 +20,7 @@
 #include <unistd.h>
 
 #include "png_read.h"
+#include "temp_dir.h"
 
 #ifndef VCSPH_BINARY
 #error "VCSPH_BINARY must name the vcsph executable (CMake defines it)"
@@ -34,9 +34,7 @@ static int setup(void **state)
 {
     char *dir = malloc(256);
     if (!dir) return -1;
-    const char *tmp = getenv("TMPDIR");
-    snprintf(dir, 256, "%s/vcsph-plot-XXXXXX", tmp && *tmp ? tmp : "/tmp");
-    if (!mkdtemp(dir)) {
+    if (temp_dir_make(dir, 256, "vcsph-plot") != 0) {
         free(dir);
         return -1;
     }
@@ -44,16 +42,10 @@ static int setup(void **state)
     return 0;
 }
 
-static int remove_entry(const char *path, const struct stat *st, int flag, struct FTW *ftw)
-{
-    (void)st, (void)flag, (void)ftw;
-    return remove(path);
-}
-
 static int teardown(void **state)
 {
     char *dir = *state;
-    int rc = nftw(dir, remove_entry, 16, FTW_DEPTH | FTW_PHYS);
+    int rc = temp_dir_remove(dir);
     free(dir);
     return rc;
 }

@@ -1,7 +1,7 @@
 /* Unit tests of io/snapshot: HDF5 snapshots read back through the HDF5 library, and the
  * XDMF index checked against the files it points at. */
 #ifndef _POSIX_C_SOURCE
-#define _POSIX_C_SOURCE 200809L /* mkdtemp, dup, dup2 */
+#define _POSIX_C_SOURCE 200809L /* mkdtemp (temp_dir.h), dup, dup2 */
 #endif
 
 #include <setjmp.h>
@@ -25,11 +25,13 @@
 
 #include "io/snapshot.h"
 
+#include "temp_dir.h"
+
 /* ---------------------------------------------------------------------------------------- */
-/* Fixture: a fresh directory under /tmp per test, removed afterwards                         */
+/* Fixture: a fresh directory under $TMPDIR (else /tmp) per test, removed afterwards          */
 
 typedef struct {
-    char dir[64];
+    char dir[256];
     char path[512]; /* scratch for path_in */
 } fixture;
 
@@ -37,8 +39,7 @@ static int setup(void **state)
 {
     fixture *fx = calloc(1, sizeof *fx);
     if (!fx) return -1;
-    strcpy(fx->dir, "/tmp/vcsph_snapshot_XXXXXX");
-    if (!mkdtemp(fx->dir)) {
+    if (temp_dir_make(fx->dir, sizeof fx->dir, "vcsph-snapshot") != 0) {
         free(fx);
         return -1;
     }
@@ -49,20 +50,9 @@ static int setup(void **state)
 static int teardown(void **state)
 {
     fixture *fx = *state;
-    DIR *d = opendir(fx->dir);
-    if (d) {
-        char p[512];
-        for (struct dirent *e; (e = readdir(d));) {
-            if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0) continue;
-            snprintf(p, sizeof p, "%s/%s", fx->dir, e->d_name);
-            if (unlink(p) != 0)
-                rmdir(p); /* the rename-onto-a-directory test leaves an empty directory */
-        }
-        closedir(d);
-    }
-    rmdir(fx->dir);
+    int rc = temp_dir_remove(fx->dir);
     free(fx);
-    return 0;
+    return rc;
 }
 
 static const char *path_in(fixture *fx, const char *name)
