@@ -2,7 +2,14 @@
 #include "core/derived.h"
 #include "scheme/models.h"
 
+#include <limits.h>
 #include <math.h>
+#include <stdint.h>
+
+/* The solver indexes particles with int32 (neighbour lists, ghost sources): a case whose
+   liquid box lattice holds more points than that is refused (derived_check), and neither counted
+   nor multiplied out in a long (derived_compute). */
+#define PARTICLES_MAX INT32_MAX
 
 static double min2(double a, double b) { return a < b ? a : b; }
 
@@ -26,6 +33,45 @@ bool derived_lattice_point(const config *cfg, const derived *dv, long c0, long c
     return r2 <= 1.0;
 }
 
+/* Points of the liquid box lattice, in double: the product of the n_axis may overflow a long. */
+static double box_points(const derived *dv)
+{
+    return (double)dv->n_axis[0] * (double)dv->n_axis[1] * (double)dv->n_axis[2];
+}
+
+/* The lattice points derived_lattice_point keeps for the ellipse (ellipsoid). Along a line of
+   the lattice parallel to axis a, it keeps a run symmetric about the middle: its test is
+   monotone in |2 c_a + 1 - n_a| (an exact integer, then a correctly rounded division, square
+   and sums). So each line is counted by bisection on that same predicate, which gives the
+   count of the point-by-point loop exactly, in O(lines log n) rather than O(points) (10^9
+   points in a cube: 10^6 lines along the longest axis, 10^7 evaluations). */
+static long ellipse_points(const config *cfg, const derived *dv)
+{
+    int a = 0;
+    for (int d = 1; d < cfg->dim; d++)
+        if (dv->n_axis[d] > dv->n_axis[a]) a = d;
+    int b = (a + 1) % 3, e = (a + 2) % 3; /* in 2D, one of them is axis 2, with one point */
+    long n = dv->n_axis[a], count = 0, c[3];
+    double x[3];
+    for (c[e] = 0; c[e] < dv->n_axis[e]; c[e]++) {
+        for (c[b] = 0; c[b] < dv->n_axis[b]; c[b]++) {
+            /* the run's first point is in [0, (n - 1) / 2]; the line has none if that is out */
+            long lo = 0, hi = (n - 1) / 2;
+            c[a] = hi;
+            if (!derived_lattice_point(cfg, dv, c[0], c[1], c[2], x)) continue;
+            while (lo < hi) {
+                c[a] = lo + (hi - lo) / 2;
+                if (derived_lattice_point(cfg, dv, c[0], c[1], c[2], x))
+                    hi = c[a];
+                else
+                    lo = c[a] + 1;
+            }
+            count += n - 2 * lo;
+        }
+    }
+    return count;
+}
+
 void derived_compute(const config *cfg, const motion *mo, derived *dv)
 {
     double dr = cfg->liquid_height / cfg->resolution;
@@ -43,26 +89,27 @@ void derived_compute(const config *cfg, const motion *mo, derived *dv)
             dv->spacing[d] = 1.0;
             continue;
         }
-        long n = d == 1 ? cfg->resolution : lround(extent[d] / dr);
+        /* past the range of a long, lround's result is unspecified: such a length counts
+           as more points than PARTICLES_MAX rather than as one */
+        double q = extent[d] / dr;
+        long n = d == 1 ? cfg->resolution : q < 0x1p62 ? lround(q) : LONG_MAX;
         dv->n_axis[d] = n < 1 ? 1 : n;
         dv->spacing[d] = extent[d] / (double)dv->n_axis[d];
         dv->v0 *= extent[d];
     }
-    if (cfg->liquid_shape == LIQUID_BOX) {
+    if (box_points(dv) > PARTICLES_MAX) {
+        /* refused by derived_check; the box's volume stands, the count is left at 0 */
+        dv->n_fluid = 0;
+        dv->cell_volume = dv->spacing[0] * dv->spacing[1] * dv->spacing[2];
+    } else if (cfg->liquid_shape == LIQUID_BOX) {
         dv->n_fluid = dv->n_axis[0] * dv->n_axis[1] * dv->n_axis[2];
         dv->cell_volume = dv->v0 / (double)dv->n_fluid;
     } else {
         /* the ellipse (ellipsoid) inscribed in the box: the lattice points lattice_fill keeps,
            each standing for one cell of the box lattice */
-        long n = 0;
-        double x[3];
-        for (long c2 = 0; c2 < dv->n_axis[2]; c2++)
-            for (long c1 = 0; c1 < dv->n_axis[1]; c1++)
-                for (long c0 = 0; c0 < dv->n_axis[0]; c0++)
-                    n += derived_lattice_point(cfg, dv, c0, c1, c2, x);
-        dv->n_fluid = n;
+        dv->n_fluid = ellipse_points(cfg, dv);
         dv->cell_volume = dv->spacing[0] * dv->spacing[1] * dv->spacing[2];
-        dv->v0 = (double)n * dv->cell_volume;
+        dv->v0 = (double)dv->n_fluid * dv->cell_volume;
     }
 
     dv->g_max = motion_max_effective_gravity(mo, cfg->gravity, cfg->t_end);
@@ -105,6 +152,19 @@ void derived_compute(const config *cfg, const motion *mo, derived *dv)
 
 int derived_check(const config *cfg, const derived *dv, char *err, size_t err_len)
 {
+    if (box_points(dv) > PARTICLES_MAX) {
+        char axes[64];
+        if (cfg->dim == 2)
+            snprintf(axes, sizeof axes, "%ld x %ld", dv->n_axis[0], dv->n_axis[1]);
+        else
+            snprintf(axes, sizeof axes, "%ld x %ld x %ld", dv->n_axis[0], dv->n_axis[1],
+                     dv->n_axis[2]);
+        snprintf(err, err_len,
+                 "numerics.resolution = %d: the liquid box's lattice would have %.3g points "
+                 "(%s), more than the %d particles the solver can index; lower the resolution",
+                 cfg->resolution, box_points(dv), axes, PARTICLES_MAX);
+        return 2;
+    }
     if (dv->c0 <= 0.0) {
         snprintf(err, err_len,
                  "numerics.sound_speed = auto: 10 sqrt(2 g_max H) is 0 without gravity or tank "

@@ -11,7 +11,8 @@ typedef struct {
     long n_axis[3];     /* lattice particles along x, y, z (z: 1 in 2D) */
     double spacing[3];  /* lattice spacing per axis: dr along y; along x (z) the liquid length
                            (tank width) over a whole number of particles, within dr/(2 n) of dr */
-    long n_fluid;       /* the lattice points kept (derived_lattice_point) */
+    long n_fluid;       /* the lattice points kept (derived_lattice_point); 0, uncounted,
+                           when derived_check refuses the lattice as too large */
     double v0;          /* initial liquid volume (per unit width in 2D): the box
                            L H W; for liquid.shape = ellipse, N x the cell
                            volume, the volume the particles stand for */
@@ -44,7 +45,8 @@ void derived_compute(const config *cfg, const motion *mo, derived *out);
  * always for liquid.shape = box, inside the inscribed ellipse (ellipsoid) for ellipse. */
 bool derived_lattice_point(const config *cfg, const derived *dv, long c0, long c1, long c2,
                            double x[3]);
-/* Whether the derived numbers make a runnable case (a sound speed > 0: `auto` needs gravity
+/* Whether the derived numbers make a runnable case (a lattice of at most INT32_MAX points, which
+ * the solver's int32 particle indices can number; a sound speed > 0: `auto` needs gravity
  * or motion; a response period > 0 for the adaptive eta control). Returns 0, or 2 with a
  * message naming the key. */
 int derived_check(const config *cfg, const derived *dv, char *err, size_t err_len);
