@@ -300,7 +300,7 @@ static void gp_begin_plot(FILE *f, const plot_inputs *in, const char *png, int h
           "set datafile columnheaders\n"
           "set datafile missing ''\n"
           "set grid\n"
-          "set key below\n" /* never over a curve */
+          "set key outside top center horizontal\n" /* never over a curve, clear of the x label */
           "set xlabel 't (s)'\n",
           f);
     fprintf(f, "set output '%s'\nset title ", png);
