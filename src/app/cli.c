@@ -1,18 +1,22 @@
 /* cli: argument parsing. */
 #include "app/cli.h"
 
+#include <ctype.h>
 #include <stdio.h>
 #include <string.h>
 
 void cli_usage(FILE *out)
 {
     fputs("usage: vcsph run CASE [--set section.key=value]... [-o DIR] [--quiet]\n"
+          "       vcsph run --restart OUTDIR/checkpoint.h5 [--set case.t_end=T]\n"
+          "                 [--set output.KEY=VALUE]... [--quiet]\n"
           "       vcsph check CASE [--set section.key=value]...\n"
           "       vcsph volume SNAPSHOT...\n"
           "       vcsph plot OUTDIR\n"
           "       vcsph --help | --version\n"
           "\n"
           "  run     run the case; outputs go to output.dir of the case (default out/<name>)\n"
+
           "  check   validate the case and print the derived numbers; runs nothing\n"
           "  volume  print t, eps_v1 (Eq. 12) and eps_gm (Eq. 15) of saved snapshots (CSV)\n"
           "  plot    PNG plots of a run's output directory with gnuplot, into OUTDIR/images\n"
@@ -20,9 +24,14 @@ void cli_usage(FILE *out)
           "          the script OUTDIR/images/plot.gp can be edited and rerun)\n"
           "  --set   override any key of the case file (repeatable)\n"
           "  -o DIR  output directory\n"
+          "  --restart OUTDIR/checkpoint.h5\n"
+          "          continue the run of a checkpoint (written every output.checkpoint_every\n"
+          "          wall-clock seconds, and when SIGTERM or SIGINT stops a run) in its folder,\n"
+          "          as if it had never stopped; only case.t_end and output.* (not output.dir)\n"
+          "          may change\n"
           "  --quiet no terminal output (log.txt is still written)\n"
           "Threads: OMP_NUM_THREADS. Exit status: 0 done, 1 I/O failure, 2 bad input,\n"
-          "3 numerical breakdown.\n",
+          "3 numerical breakdown, 4 stopped by SIGTERM or SIGINT (checkpoint written).\n",
           out);
 }
 
@@ -39,6 +48,43 @@ static int take_value(int argc, char **argv, int *k, const char **value, char *e
         return 2;
     }
     *value = argv[++*k];
+    return 0;
+}
+
+/* Whether --set `o` ("section.key=value") may change a restarted run: its end time and how
+ * it writes its outputs, not its physics, which the checkpoint's state depends on. The
+ * output folder is the checkpoint's, whatever output.dir says. */
+static int restart_may_set(const char *o)
+{
+    while (isspace((unsigned char)*o)) o++;
+    size_t len = strcspn(o, "=");
+    while (len > 0 && isspace((unsigned char)o[len - 1])) len--;
+    if (len == strlen("case.t_end") && !strncmp(o, "case.t_end", len)) return 1;
+    if (len == strlen("output.dir") && !strncmp(o, "output.dir", len)) return 0;
+    return len > 7 && !strncmp(o, "output.", 7);
+}
+
+static int check_restart(const cli_args *args, char *err, int err_len)
+{
+    const char *why = NULL;
+    if (args->command != CLI_RUN)
+        why = "only `vcsph run` takes --restart";
+    else if (args->case_path)
+        why = "give no case file with --restart: the run continues the checkpoint's case";
+    else if (args->output_dir)
+        why = "give no -o with --restart: the run continues in the checkpoint's folder";
+    if (why) {
+        snprintf(err, (size_t)err_len, "vcsph: %s", why);
+        return 2;
+    }
+    for (int k = 0; k < args->n_overrides; k++) {
+        if (restart_may_set(args->overrides[k])) continue;
+        snprintf(err, (size_t)err_len,
+                 "vcsph: --set %s: a restarted run keeps the checkpoint's case; only case.t_end "
+                 "and the output.* keys (except output.dir) may change",
+                 args->overrides[k]);
+        return 2;
+    }
     return 0;
 }
 
@@ -100,11 +146,14 @@ int cli_parse(int argc, char **argv, cli_args *args, char *err, int err_len)
                 return 2;
             }
             args->output_dir = value;
+        } else if (!strcmp(a, "--restart") || !strncmp(a, "--restart=", 10)) {
+            if (take_value(argc, argv, &k, &value, err, err_len)) return 2;
+            args->restart_path = value;
         } else if (!strcmp(a, "--quiet") || !strcmp(a, "-q")) {
             args->quiet = true;
         } else if (a[0] == '-') {
             snprintf(err, (size_t)err_len,
-                     "vcsph: unknown option '%s' (allowed: --set, -o, --quiet)", a);
+                     "vcsph: unknown option '%s' (allowed: --set, -o, --restart, --quiet)", a);
             return 2;
         } else if (!args->case_path) {
             args->case_path = a;
@@ -114,6 +163,7 @@ int cli_parse(int argc, char **argv, cli_args *args, char *err, int err_len)
             return 2;
         }
     }
+    if (args->restart_path) return check_restart(args, err, err_len);
     if (!args->case_path) {
         snprintf(err, (size_t)err_len, "vcsph %s: missing the case file", cmd);
         return 2;

@@ -17,7 +17,8 @@ typedef struct {
     const char *plot_dir;                     /* plot: a run's output directory */
     const char *overrides[CLI_MAX_OVERRIDES]; /* "section.key=value" from --set */
     int n_overrides;
-    const char *output_dir; /* -o, NULL: output.dir of the case */
+    const char *output_dir;   /* -o, NULL: output.dir of the case */
+    const char *restart_path; /* run --restart: the checkpoint to continue */
     bool quiet;
 } cli_args;
 

@@ -5,9 +5,11 @@
 #include "boundary/motion.h"
 #include "core/config.h"
 #include "core/derived.h"
+#include "io/checkpoint.h"
 #include "io/snapshot_read.h"
 
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #define VCSPH_VERSION "0.1.0"
@@ -80,6 +82,57 @@ static int plot_run_dir(const char *dir)
     return RUN_OK;
 }
 
+/* The checkpoint's folder: a restarted run writes where the checkpoint was. */
+static void folder_of(const char *path, char *dir, size_t size)
+{
+    const char *slash = strrchr(path, '/');
+    if (!slash)
+        snprintf(dir, size, ".");
+    else if (slash == path)
+        snprintf(dir, size, "/");
+    else
+        snprintf(dir, size, "%.*s", (int)(slash - path), path);
+}
+
+/* The case a checkpoint continues, its stored text with the allowed --set applied (cli.c). */
+static int checkpoint_case(const checkpoint_data *cd, const cli_args *args, config *cfg)
+{
+    char err[2048];
+    const checkpoint_array *a =
+        checkpoint_find(cd, "case", CHECKPOINT_BYTES, SIZE_MAX, NULL, err, sizeof err);
+    char *text = a ? strndup(a->data ? (const char *)a->data : "", a->n) : NULL;
+    if (!text) {
+        fprintf(stderr, "vcsph: %s: %s\n", args->restart_path, a ? "out of memory" : err);
+        return RUN_BAD_INPUT;
+    }
+    int status = config_load_string(cfg, text, args->restart_path, args->overrides,
+                                    args->n_overrides, err, sizeof err);
+    free(text);
+    if (status) fprintf(stderr, "vcsph: %s\n", err);
+    return status ? RUN_BAD_INPUT : RUN_OK;
+}
+
+/* `vcsph run --restart`: the whole checkpoint is read and verified before anything else. */
+static int restart_run(const cli_args *args)
+{
+    checkpoint_data cd;
+    char err[2048];
+    if (checkpoint_read(args->restart_path, &cd, err, sizeof err)) {
+        fprintf(stderr, "vcsph: cannot restart: %s\n", err);
+        return RUN_BAD_INPUT;
+    }
+    static config cfg;
+    int status = checkpoint_case(&cd, args, &cfg);
+    if (status == RUN_OK) {
+        char dir[CONFIG_PATH_MAX];
+        folder_of(args->restart_path, dir, sizeof dir);
+        run_options opt = {dir, args->quiet};
+        status = simulation_resume(&cfg, &opt, &cd);
+    }
+    checkpoint_data_free(&cd);
+    return status;
+}
+
 int main(int argc, char **argv)
 {
     cli_args args;
@@ -98,6 +151,7 @@ int main(int argc, char **argv)
     }
     if (args.command == CLI_VOLUME) return volume_of_snapshots(args.snapshots, args.n_snapshots);
     if (args.command == CLI_PLOT) return plot_run_dir(args.plot_dir);
+    if (args.restart_path) return restart_run(&args);
     static config cfg;
     if (config_load(&cfg, args.case_path, args.overrides, args.n_overrides, err, sizeof err)) {
         fprintf(stderr, "vcsph: %s\n", err);

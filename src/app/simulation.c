@@ -1,6 +1,8 @@
 /* simulation: the time loop and its outputs (design §1, §4, §5). */
 #include "app/simulation.h"
+#include "app/interrupt.h"
 #include "app/progress.h"
+#include "app/run_state.h"
 #include "core/log.h"
 #include "diag/energy.h"
 #include "diag/health.h"
@@ -13,42 +15,19 @@
 #include "scheme/solver.h"
 
 #include <errno.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 
-#define simulation_run_dim DIM_NAME(simulation_run)
+#define simulation_run_dim    DIM_NAME(simulation_run)
+#define simulation_resume_dim DIM_NAME(simulation_resume)
 
 static const char timeseries_header[] =
     "t,step,dt,n_fluid,eps_v1,eps_v2,eps_v3,eps_gm,eps_sph,mass_err,eta,edbc,n_edbc,"
     "n_free_surface,ekin,epot,eint,work_in,ediss,com_x,com_y,com_z,xmin,xmax,ymax,umax,"
     "rho_min,rho_max,esurf,work_st";
-
-typedef struct {
-    solver s;
-    const config *cfg;
-    const run_options *opt;
-    char *case_text; /* resolved case.ini, also stored in every snapshot */
-    csv_file timeseries, events, probes_csv, dissipation;
-    probes probes;
-    double energy0; /* ekin + epot + eint (+ esurf) at t = 0 */
-    /* dissipation per excitation period (theory §10): the period that ends next, and
-       ediss where it started */
-    long period;
-    double ediss_period_start;
-    double t_stop; /* the prepared step ends at or before this time */
-    double mass0, v0;
-    double next_series, next_snapshot, next_image;
-    int n_images;
-    /* snapshot index for the XDMF file */
-    int n_snapshots, cap_snapshots;
-    char **snapshot_files;
-    double *snapshot_times;
-    size_t *snapshot_counts;
-    int speed_warned; /* U_max > c0/10 reported and not yet back below */
-    progress pr;
-} run;
 
 static int make_dir(const char *path)
 {
@@ -215,20 +194,40 @@ static int snapshot_fields(solver *s, snapshot_field *f)
     return n;
 }
 
+int run_reserve_snapshots(run *r, int n)
+{
+    if (n <= r->cap_snapshots) return 0;
+    int cap = r->cap_snapshots ? 2 * r->cap_snapshots : 64;
+    while (cap < n) cap *= 2;
+    char **files = realloc(r->snapshot_files, (size_t)cap * sizeof *files);
+    if (files) r->snapshot_files = files;
+    double *times = realloc(r->snapshot_times, (size_t)cap * sizeof *times);
+    if (times) r->snapshot_times = times;
+    size_t *counts = realloc(r->snapshot_counts, (size_t)cap * sizeof *counts);
+    if (counts) r->snapshot_counts = counts;
+    if (!files || !times || !counts) return -1;
+    r->cap_snapshots = cap;
+    return 0;
+}
+
+/* snapshots.xmf listing the snapshots written so far. */
+static int write_xdmf(run *r, const snapshot_field *fields, int n_fields)
+{
+    char path[CONFIG_PATH_MAX + 96], err[512];
+    out_path(r, path, sizeof path, "snapshots.xmf");
+    if (snapshot_write_xdmf(path, r->n_snapshots, (const char *const *)r->snapshot_files,
+                            r->snapshot_times, r->snapshot_counts, fields, n_fields, DIM, err,
+                            sizeof err)) {
+        log_error("vcsph: %s", err);
+        return -1;
+    }
+    return 0;
+}
+
 static int write_snapshot(run *r)
 {
     solver *s = &r->s;
-    if (r->n_snapshots == r->cap_snapshots) {
-        int cap = r->cap_snapshots ? 2 * r->cap_snapshots : 64;
-        char **files = realloc(r->snapshot_files, (size_t)cap * sizeof *files);
-        if (files) r->snapshot_files = files;
-        double *times = realloc(r->snapshot_times, (size_t)cap * sizeof *times);
-        if (times) r->snapshot_times = times;
-        size_t *counts = realloc(r->snapshot_counts, (size_t)cap * sizeof *counts);
-        if (counts) r->snapshot_counts = counts;
-        if (!files || !times || !counts) return -1;
-        r->cap_snapshots = cap;
-    }
+    if (run_reserve_snapshots(r, r->n_snapshots + 1)) return -1;
     char name[64], path[CONFIG_PATH_MAX + 96], err[512];
     snprintf(name, sizeof name, "snapshots/%06d.h5", r->n_snapshots);
     out_path(r, path, sizeof path, name);
@@ -244,15 +243,21 @@ static int write_snapshot(run *r)
     r->snapshot_files[k] = strdup(name);
     r->snapshot_times[k] = s->t;
     r->snapshot_counts[k] = s->p.n_fluid;
-    out_path(r, path, sizeof path, "snapshots.xmf");
-    if (!r->snapshot_files[k] ||
-        snapshot_write_xdmf(path, r->n_snapshots, (const char *const *)r->snapshot_files,
-                            r->snapshot_times, r->snapshot_counts, fields, n_fields, DIM, err,
-                            sizeof err)) {
-        log_error("vcsph: %s", err);
-        return -1;
+    if (!r->snapshot_files[k]) return -1;
+    return write_xdmf(r, fields, n_fields);
+}
+
+/* A restarted run's snapshots.xmf lists the snapshots of the checkpoint, not those written
+ * after it (which restart_rewind_outputs removed); none: no index, as in a fresh run. */
+static int rewind_xdmf(run *r)
+{
+    if (r->n_snapshots > 0) {
+        snapshot_field fields[16];
+        return write_xdmf(r, fields, snapshot_fields(&r->s, fields));
     }
-    return 0;
+    char path[CONFIG_PATH_MAX + 96];
+    out_path(r, path, sizeof path, "snapshots.xmf");
+    return remove(path) == 0 || errno == ENOENT ? 0 : -1;
 }
 
 /* Particle images (design §1): the local volume error eps_Vi of every particle, like the
@@ -319,8 +324,18 @@ static int has_periods(const run *r) { return r->s.dv.omega > 0.0; }
 
 static int has_probes(const config *cfg) { return cfg->n_gauges + cfg->n_pressure_probes > 0; }
 
+/* Creates CSV file k with its header, or for a restarted run reopens it at its size at the
+ * checkpoint (the rows written after it are dropped). */
+static int open_csv(run *r, int k, const char *header)
+{
+    char path[CONFIG_PATH_MAX + 64];
+    out_path(r, path, sizeof path, run_csv_name(k));
+    if (r->resumed) return csv_reopen(run_csv(r, k), path, r->resume_sizes[k]);
+    return csv_open(run_csv(r, k), path, header);
+}
+
 /* probes.csv with the header t,gauge_1..,pressure_1.. (design §3) */
-static int open_probes(run *r, const char *path)
+static int open_probes(run *r)
 {
     const config *cfg = r->cfg;
     char header[32 + 24 * 2 * CONFIG_PROBES_MAX];
@@ -330,7 +345,31 @@ static int open_probes(run *r, const char *path)
     for (int k = 0; k < cfg->n_pressure_probes; k++)
         len += snprintf(header + len, sizeof header - (size_t)len, ",pressure_%d", k + 1);
     probes_init(&r->probes, r->s.dv.h, cfg->dim == 3 ? cfg->tank_width : 1.0);
-    return csv_open(&r->probes_csv, path, header);
+    return open_csv(r, RUN_CSV_PROBES, header);
+}
+
+/* A fresh run starts the files; a restarted one rewinds them to the checkpoint. */
+static int open_files(run *r)
+{
+    char path[CONFIG_PATH_MAX + 64];
+    out_path(r, path, sizeof path, "log.txt");
+    if (log_open(path, r->resumed)) return -1;
+    out_path(r, path, sizeof path, "case.ini");
+    FILE *f = fopen(path, "w");
+    if (!f || fputs(r->case_text, f) == EOF || fclose(f)) return -1;
+    if (open_csv(r, RUN_CSV_TIMESERIES, timeseries_header)) return -1;
+    if (has_periods(r) &&
+        open_csv(r, RUN_CSV_DISSIPATION, "period,t_start,t_end,e_diss,power,power_norm"))
+        return -1;
+    if (has_probes(r->cfg) && open_probes(r)) return -1;
+    if (open_csv(r, RUN_CSV_EVENTS, "t,event,detail")) return -1;
+    if (r->resumed) {
+        restart_rewind_outputs(r);
+        return rewind_xdmf(r);
+    }
+    /* a checkpoint left by an earlier run here would rewind this run's files wrongly */
+    out_path(r, path, sizeof path, "checkpoint.h5");
+    return remove(path) == 0 || errno == ENOENT ? 0 : -1;
 }
 
 static int open_outputs(run *r)
@@ -345,24 +384,7 @@ static int open_outputs(run *r)
                   strerror(errno));
         return -1;
     }
-    out_path(r, path, sizeof path, "log.txt");
-    if (log_open(path)) return -1;
-    out_path(r, path, sizeof path, "case.ini");
-    FILE *f = fopen(path, "w");
-    if (!f || fputs(r->case_text, f) == EOF || fclose(f)) return -1;
-    out_path(r, path, sizeof path, "timeseries.csv");
-    if (csv_open(&r->timeseries, path, timeseries_header)) return -1;
-    if (has_periods(r)) {
-        out_path(r, path, sizeof path, "dissipation.csv");
-        if (csv_open(&r->dissipation, path, "period,t_start,t_end,e_diss,power,power_norm"))
-            return -1;
-    }
-    if (has_probes(r->cfg)) {
-        out_path(r, path, sizeof path, "probes.csv");
-        if (open_probes(r, path)) return -1;
-    }
-    out_path(r, path, sizeof path, "events.csv");
-    return csv_open(&r->events, path, "t,event,detail");
+    return open_files(r);
 }
 
 static void close_run(run *r)
@@ -469,17 +491,70 @@ static int prepare(run *r)
     return -1;
 }
 
+/* The rest of a step once its RK4 stages are done: the next step's neighbours and geometry
+ * (also this state's diagnostics), the control events and the outputs due. A restarted run
+ * begins here, with the state of the checkpoint. */
+static int finish_step(run *r)
+{
+    if (prepare(r)) return RUN_FAILED;
+    control_step(r);
+    int last = r->s.t >= r->cfg->t_end;
+    if (outputs_due(r, last)) return RUN_FAILED;
+    progress_update(&r->pr, r->s.t, r->s.step, last);
+    return RUN_OK;
+}
+
+static const char *signal_name(int sig)
+{
+    return sig == SIGTERM ? "SIGTERM" : sig == SIGINT ? "SIGINT" : "a signal";
+}
+
+/* Writes checkpoint.h5 when output.checkpoint_every wall-clock seconds have passed or a
+ * signal asked the run to stop, with the state between two steps that a restart starts from
+ * (restart.c). Returns RUN_OK to go on, RUN_INTERRUPTED after a signal. A checkpoint that
+ * cannot be written is reported and the run goes on (the last one stays whole). */
+static int checkpoint_due(run *r)
+{
+    const config *cfg = r->cfg;
+    int sig = interrupt_signal();
+    if (!sig && !(cfg->checkpoint_every > 0.0 && progress_wall_time() >= r->next_checkpoint))
+        return RUN_OK;
+    char path[CONFIG_PATH_MAX + 64], err[1024];
+    out_path(r, path, sizeof path, "checkpoint.h5");
+    int failed = restart_save(r, path, err, sizeof err);
+    r->next_checkpoint = progress_wall_time() + cfg->checkpoint_every;
+    if (failed) {
+        progress_clear(&r->pr);
+        log_error("vcsph: %s", err);
+        if (sig) return RUN_FAILED;
+        event(r, "checkpoint_failed", err);
+        return RUN_OK;
+    }
+    if (!sig) return RUN_OK;
+    progress_clear(&r->pr);
+    log_info("vcsph: stopped by %s at t = %.9g s, step %ld; state saved in %s; continue with: "
+             "vcsph run --restart %s",
+             signal_name(sig), r->s.t, r->s.step, path, path);
+    return RUN_INTERRUPTED;
+}
+
 static int time_loop(run *r)
 {
     solver *s = &r->s;
     const config *cfg = r->cfg;
     char msg[512];
+    int status;
     progress_start(&r->pr, cfg->t_end, s->p.n_fluid, s->step, r->opt->quiet);
-    /* the initial state too: a sound speed too low for the hydrostatic column fails here */
-    if (breakdown(r)) return RUN_BREAKDOWN;
-    if (prepare(r)) return RUN_FAILED;
-    control_step(r);
-    if (outputs_due(r, 0)) return RUN_FAILED;
+    r->next_checkpoint = progress_wall_time() + cfg->checkpoint_every;
+    if (r->resumed) {
+        if ((status = finish_step(r))) return status;
+    } else {
+        /* the initial state too: a sound speed too low for the hydrostatic column fails here */
+        if (breakdown(r)) return RUN_BREAKDOWN;
+        if (prepare(r)) return RUN_FAILED;
+        control_step(r);
+        if (outputs_due(r, 0)) return RUN_FAILED;
+    }
     while (s->t < cfg->t_end) {
         solver_advance(s, r->t_stop);
         if (s->max_displacement > 0.5 * s->skin) {
@@ -487,19 +562,45 @@ static int time_loop(run *r)
                      s->max_displacement, 0.5 * s->skin);
             event(r, "neighbour_skin_exceeded", msg);
         }
+        /* a broken state is never checkpointed: the last good checkpoint stays */
         if (breakdown(r)) return RUN_BREAKDOWN;
-        /* the next step's neighbours and geometry are also this state's diagnostics */
-        if (prepare(r)) return RUN_FAILED;
-        control_step(r);
-        int last = s->t >= cfg->t_end;
-        if (outputs_due(r, last)) return RUN_FAILED;
-        progress_update(&r->pr, s->t, s->step, last);
+        if ((status = checkpoint_due(r))) return status;
+        if ((status = finish_step(r))) return status;
     }
     progress_clear(&r->pr);
     return RUN_OK;
 }
 
-int simulation_run_dim(const config *cfg, const run_options *opt)
+/* The state at t = 0: the lattice of solver_init, its mass and volume the references. */
+static void start_fresh(run *r)
+{
+    r->v0 = r->s.dv.v0;
+    solver_update_eos(&r->s);
+    diagnostics dg;
+    diagnostics_compute(&r->s, &dg);
+    r->mass0 = dg.mass;
+    r->period = 1;
+}
+
+static void log_start(const run *r)
+{
+    const config *cfg = r->cfg;
+    const derived *dv = &r->s.dv;
+    log_info("vcsph: %s, %dD, %s, %ld particles, dr = %.4g m, c0 = %.4g m/s, t_end = %g s",
+             cfg->name, DIM, config_scheme_name(cfg->scheme), dv->n_fluid, dv->dr, dv->c0,
+             cfg->t_end);
+    if (r->s.mo.kind == MOTION_TABLE) /* theory §6: say once how the table was read */
+        log_info("vcsph: motion table %s: %zu rows, t in [%g, %g] s, accelerations from a "
+                 "natural cubic spline (zero outside the table), largest |g - a_tank| = %.4g m/s^2",
+                 cfg->motion_file, r->s.mo.n_knots, r->s.mo.t[0], r->s.mo.t[r->s.mo.n_knots - 1],
+                 dv->g_max);
+    if (r->resumed)
+        log_info("vcsph: restarted from the checkpoint at t = %.9g s, step %ld", r->s.t, r->s.step);
+    log_info("vcsph: output in %s", r->opt->output_dir);
+}
+
+/* A run from t = 0 (cd NULL) or from a checkpoint. */
+static int run_case(const config *cfg, const run_options *opt, const checkpoint_data *cd)
 {
     run r;
     memset(&r, 0, sizeof r);
@@ -513,34 +614,42 @@ int simulation_run_dim(const config *cfg, const run_options *opt)
         return status;
     }
     r.case_text = resolved_case_text(cfg);
+    /* a checkpoint that does not fit is refused before any file is touched (design §2) */
+    if (cd && r.case_text &&
+        (restart_load(&r, cd, err, sizeof err) || restart_check_outputs(&r, err, sizeof err))) {
+        log_error("vcsph: cannot restart from the checkpoint in %s: %s", opt->output_dir, err);
+        close_run(&r);
+        return RUN_BAD_INPUT;
+    }
     if (!r.case_text || open_outputs(&r)) {
         log_error("vcsph: cannot write the outputs in %s", opt->output_dir);
         close_run(&r);
         return RUN_FAILED;
     }
-    const derived *dv = &r.s.dv;
-    log_info("vcsph: %s, %dD, %s, %ld particles, dr = %.4g m, c0 = %.4g m/s, t_end = %g s",
-             cfg->name, DIM, config_scheme_name(cfg->scheme), dv->n_fluid, dv->dr, dv->c0,
-             cfg->t_end);
-    if (r.s.mo.kind == MOTION_TABLE) /* theory §6: say once how the table was read */
-        log_info("vcsph: motion table %s: %zu rows, t in [%g, %g] s, accelerations from a "
-                 "natural cubic spline (zero outside the table), largest |g - a_tank| = %.4g m/s^2",
-                 cfg->motion_file, r.s.mo.n_knots, r.s.mo.t[0], r.s.mo.t[r.s.mo.n_knots - 1],
-                 dv->g_max);
-    log_info("vcsph: output in %s", opt->output_dir);
-    r.v0 = dv->v0;
-    solver_update_eos(&r.s);
-    diagnostics dg;
-    diagnostics_compute(&r.s, &dg);
-    r.mass0 = dg.mass;
-    r.period = 1;
+    log_start(&r);
+    if (!cd) start_fresh(&r);
+    long step0 = r.s.step;
     double wall0 = progress_wall_time();
+    interrupt_install();
     status = time_loop(&r);
+    interrupt_restore();
+    /* the steps of this invocation: a restarted run counts from its checkpoint */
     double wall = progress_wall_time() - wall0;
+    long steps = r.s.step - step0;
     if (status == RUN_OK)
-        log_info("vcsph: done: %ld steps in %.1f s (%.3g particle-steps/s); output in %s", r.s.step,
-                 wall, wall > 0 ? (double)r.s.step * (double)dv->n_fluid / wall : 0.0,
+        log_info("vcsph: done: %ld steps in %.1f s (%.3g particle-steps/s); output in %s", steps,
+                 wall, wall > 0 ? (double)steps * (double)r.s.p.n_fluid / wall : 0.0,
                  opt->output_dir);
     close_run(&r);
     return status;
+}
+
+int simulation_run_dim(const config *cfg, const run_options *opt)
+{
+    return run_case(cfg, opt, NULL);
+}
+
+int simulation_resume_dim(const config *cfg, const run_options *opt, const checkpoint_data *cd)
+{
+    return run_case(cfg, opt, cd);
 }

@@ -12,11 +12,22 @@ typedef struct {
     bool quiet;             /* no terminal output (tests) */
 } run_options;
 
-/* Exit statuses (design §2) */
-enum { RUN_OK = 0, RUN_FAILED = 1, RUN_BAD_INPUT = 2, RUN_BREAKDOWN = 3 };
+/* Exit statuses (design §2). RUN_INTERRUPTED: SIGTERM or SIGINT stopped the run after a
+ * step, and its state is in OUTDIR/checkpoint.h5 (`vcsph run --restart` continues it). */
+enum { RUN_OK = 0, RUN_FAILED = 1, RUN_BAD_INPUT = 2, RUN_BREAKDOWN = 3, RUN_INTERRUPTED = 4 };
 
 int simulation_run_2d(const config *cfg, const run_options *opt);
 int simulation_run_3d(const config *cfg, const run_options *opt);
+
+struct checkpoint_data;
+/* Continues the run whose checkpoint cd holds (read whole and verified by checkpoint_read),
+ * cfg its case (the checkpoint's text, with only case.t_end and [output] changed), in
+ * opt->output_dir, the checkpoint's folder. A checkpoint that does not fit the case or the
+ * files there is refused with RUN_BAD_INPUT before any file is touched. */
+int simulation_resume_2d(const config *cfg, const run_options *opt,
+                         const struct checkpoint_data *cd);
+int simulation_resume_3d(const config *cfg, const run_options *opt,
+                         const struct checkpoint_data *cd);
 
 struct snapshot_info;
 /* `vcsph volume`: eps_v1 and eps_gm of one snapshot file whose case is cfg. */
@@ -28,6 +39,12 @@ int snapshot_volume_3d(const config *cfg, const char *path, const struct snapsho
 static inline int simulation_run(const config *cfg, const run_options *opt)
 {
     return cfg->dim == 3 ? simulation_run_3d(cfg, opt) : simulation_run_2d(cfg, opt);
+}
+
+static inline int simulation_resume(const config *cfg, const run_options *opt,
+                                    const struct checkpoint_data *cd)
+{
+    return cfg->dim == 3 ? simulation_resume_3d(cfg, opt, cd) : simulation_resume_2d(cfg, opt, cd);
 }
 
 #endif

@@ -7,10 +7,10 @@
 static FILE *log_file;
 static bool log_quiet;
 
-int log_open(const char *path)
+int log_open(const char *path, bool append)
 {
     log_close();
-    log_file = fopen(path, "w");
+    log_file = fopen(path, append ? "a" : "w");
     return log_file ? 0 : -1;
 }
 

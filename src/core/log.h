@@ -4,8 +4,9 @@
 
 #include <stdbool.h>
 
-/* Starts copying messages to `path`; returns 0 or -1. */
-int log_open(const char *path);
+/* Starts copying messages to `path`, after what it holds when `append` (a restarted run);
+ * returns 0 or -1. */
+int log_open(const char *path, bool append);
 void log_close(void);
 /* Silences the terminal copy (tests); the file copy stays. */
 void log_set_quiet(bool quiet);

@@ -2,6 +2,8 @@
 #include "io/csv.h"
 
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 int csv_open(csv_file *c, const char *path, const char *header)
 {
@@ -11,6 +13,25 @@ int csv_open(csv_file *c, const char *path, const char *header)
     fprintf(c->f, "%s\n", header);
     fflush(c->f);
     return 0;
+}
+
+int csv_reopen(csv_file *c, const char *path, long long size)
+{
+    struct stat st;
+    c->column = 0;
+    c->f = NULL;
+    if (size < 0 || stat(path, &st) || st.st_size < size || truncate(path, (off_t)size)) return -1;
+    c->f = fopen(path, "a");
+    /* the position csv_size reports is the end, where the appends go */
+    return c->f && fseeko(c->f, 0, SEEK_END) == 0 ? 0 : -1;
+}
+
+long long csv_size(const csv_file *c) { return c->f ? (long long)ftello(c->f) : -1; }
+
+int csv_sync(csv_file *c)
+{
+    if (!c->f) return 0;
+    return fflush(c->f) == 0 && fsync(fileno(c->f)) == 0 ? 0 : -1;
 }
 
 void csv_close(csv_file *c)

@@ -12,7 +12,14 @@ typedef struct {
 
 /* Creates the file and writes the header line. Returns 0 or -1. */
 int csv_open(csv_file *c, const char *path, const char *header);
+/* Opens an existing file to append after its first `size` bytes, dropping the rest (the rows
+ * a restart rewinds). Returns 0, or -1 (the file is missing or shorter than size). */
+int csv_reopen(csv_file *c, const char *path, long long size);
 void csv_close(csv_file *c);
+/* Bytes written so far (every row is flushed), or -1 for a file that is not open. */
+long long csv_size(const csv_file *c);
+/* fsync: the rows so far reach the disk (before a checkpoint records csv_size). 0 or -1. */
+int csv_sync(csv_file *c);
 void csv_put(csv_file *c, double value); /* %.10g */
 void csv_put_long(csv_file *c, long value);
 void csv_put_empty(csv_file *c);                  /* a quantity not computed in this run */

@@ -1,0 +1,358 @@
+/* restart: a run's state to and from checkpoint.h5 (run_state.h), for a restart that
+ * continues bit for bit as if the run had never stopped.
+ *
+ * What is saved is the state just after a step, before the next solver_prepare: everything
+ * that solver_prepare and the outputs read and do not recompute. That is, per fluid particle
+ * in the current order (the order decides the next cell sort, and with it the order of every
+ * sum): id, x, u, rho, m (p, V and u_wall follow from them by solver_update_eos; the per-step
+ * fields lambda, surface, shifting, diffusion, ... are recomputed by solver_prepare); the
+ * scalars that the next time step and neighbour skin read (max_acc) or that accumulate
+ * (work_in, work_st); the whole eta controller, its adaptive history included (EdBC's state
+ * is its mode, in the case, and the controller's eta0_regime; n_edbc is recomputed by
+ * solver_prepare and saved for the record); and the bookkeeping of the outputs.
+ *
+ * Layout (checkpoint.h, version 1): one dataset each, scalars grouped with their "columns":
+ *   case              bytes  the resolved case text (what `vcsph run --restart` runs)
+ *   solver_f64        f64    t, last_dt, max_acc, work_in, work_st
+ *   solver_i64        i64    dim, n_fluid, step, n_edbc
+ *   eta_f64           f64    threshold, period, eta, t_last, eps_last, integral, eps_mean,
+ *                            eps_expected
+ *   eta_i64           i64    switching, kind, eta0_regime, switches, n_samples
+ *   eta_samples       f64    ETA_HISTORY samples of the adaptive control's running integral
+ *   run_f64           f64    energy0, mass0, v0, ediss_period_start, next_series,
+ *                            next_snapshot, next_image
+ *   run_i64           i64    period, n_snapshots, n_images, speed_warned
+ *   csv_sizes         i64    bytes of timeseries.csv, events.csv, dissipation.csv, probes.csv
+ *                            (-1: the run does not write it)
+ *   snapshot_times    f64    n_snapshots: the XDMF index
+ *   snapshot_counts   i64    n_snapshots
+ *   snapshot_files    bytes  n_snapshots names, each ended by a NUL
+ *   id                i64    n_fluid
+ *   x_0 .. x_{DIM-1}  f64    n_fluid, positions
+ *   u_0 .. u_{DIM-1}  f64    n_fluid, velocities
+ *   rho, m            f64    n_fluid */
+#include "app/run_state.h"
+
+#include <dirent.h>
+#include <errno.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#define SOLVER_F64 "t,last_dt,max_acc,work_in,work_st"
+#define SOLVER_I64 "dim,n_fluid,step,n_edbc"
+#define ETA_F64    "threshold,period,eta,t_last,eps_last,integral,eps_mean,eps_expected"
+#define ETA_I64    "switching,kind,eta0_regime,switches,n_samples"
+#define RUN_F64    "energy0,mass0,v0,ediss_period_start,next_series,next_snapshot,next_image"
+#define RUN_I64    "period,n_snapshots,n_images,speed_warned"
+#define CSV_SIZES  "timeseries,events,dissipation,probes"
+
+static const char *const x_names[3] = {"x_0", "x_1", "x_2"};
+static const char *const u_names[3] = {"u_0", "u_1", "u_2"};
+
+enum { MAX_ITEMS = 32 };
+
+typedef struct {
+    checkpoint_item items[MAX_ITEMS];
+    int n;
+} item_list;
+
+static void add(item_list *l, const char *name, checkpoint_type type, size_t n, const void *data,
+                const char *columns)
+{
+    l->items[l->n++] = (checkpoint_item){name, type, n, data, columns};
+}
+
+static void add_particles(item_list *l, const particles *p)
+{
+    size_t n = p->n_fluid;
+    add(l, "id", CHECKPOINT_I64, n, p->id, NULL);
+    for (int d = 0; d < DIM; d++) add(l, x_names[d], CHECKPOINT_F64, n, p->x[d], NULL);
+    for (int d = 0; d < DIM; d++) add(l, u_names[d], CHECKPOINT_F64, n, p->u[d], NULL);
+    add(l, "rho", CHECKPOINT_F64, n, p->rho, NULL);
+    add(l, "m", CHECKPOINT_F64, n, p->m, NULL);
+}
+
+/* The snapshot names one after the other, each with its NUL; free() it. */
+static char *join_names(char *const *names, int n, size_t *len)
+{
+    *len = 0;
+    for (int k = 0; k < n; k++) *len += strlen(names[k]) + 1;
+    char *buf = malloc(*len ? *len : 1);
+    if (!buf) return NULL;
+    for (size_t at = 0, k = 0; k < (size_t)n; k++) {
+        size_t size = strlen(names[k]) + 1;
+        memcpy(buf + at, names[k], size);
+        at += size;
+    }
+    return buf;
+}
+
+/* The rows written so far reach the disk before the checkpoint that counts them. */
+static int sync_csv_files(run *r, int64_t sizes[RUN_N_CSV], char *err, size_t err_len)
+{
+    for (int k = 0; k < RUN_N_CSV; k++) {
+        if (csv_sync(run_csv(r, k))) {
+            snprintf(err, err_len, "checkpoint: cannot sync %s/%s: %s", r->opt->output_dir,
+                     run_csv_name(k), strerror(errno));
+            return -1;
+        }
+        sizes[k] = csv_size(run_csv(r, k));
+    }
+    return 0;
+}
+
+int restart_save(run *r, const char *path, char *err, size_t err_len)
+{
+    const solver *s = &r->s;
+    const eta_controller *e = &s->eta_control;
+    int64_t csv_sizes[RUN_N_CSV];
+    if (sync_csv_files(r, csv_sizes, err, err_len)) return -1;
+    const double solver_f64[] = {s->t, s->last_dt, s->max_acc, s->work_in, s->work_st};
+    const int64_t solver_i64[] = {DIM, (int64_t)s->p.n_fluid, s->step, s->n_edbc};
+    const double eta_f64[] = {e->threshold, e->period,   e->eta,      e->t_last,
+                              e->eps_last,  e->integral, e->eps_mean, e->eps_expected};
+    const int64_t eta_i64[] = {e->switching, e->kind, e->eta0_regime, e->switches, e->n_samples};
+    const double run_f64[] = {r->energy0,     r->mass0,         r->v0,        r->ediss_period_start,
+                              r->next_series, r->next_snapshot, r->next_image};
+    const int64_t run_i64[] = {r->period, r->n_snapshots, r->n_images, r->speed_warned};
+    size_t n_snap = (size_t)r->n_snapshots, names_len;
+    int64_t *counts = malloc((n_snap ? n_snap : 1) * sizeof *counts);
+    char *names = join_names(r->snapshot_files, r->n_snapshots, &names_len);
+    if (!counts || !names) {
+        free(counts);
+        free(names);
+        snprintf(err, err_len, "checkpoint: out of memory");
+        return -1;
+    }
+    for (size_t k = 0; k < n_snap; k++) counts[k] = (int64_t)r->snapshot_counts[k];
+
+    item_list l = {.n = 0};
+    add(&l, "case", CHECKPOINT_BYTES, strlen(r->case_text), r->case_text, NULL);
+    add(&l, "solver_f64", CHECKPOINT_F64, 5, solver_f64, SOLVER_F64);
+    add(&l, "solver_i64", CHECKPOINT_I64, 4, solver_i64, SOLVER_I64);
+    add(&l, "eta_f64", CHECKPOINT_F64, 8, eta_f64, ETA_F64);
+    add(&l, "eta_i64", CHECKPOINT_I64, 5, eta_i64, ETA_I64);
+    add(&l, "eta_samples", CHECKPOINT_F64, ETA_HISTORY, e->samples, NULL);
+    add(&l, "run_f64", CHECKPOINT_F64, 7, run_f64, RUN_F64);
+    add(&l, "run_i64", CHECKPOINT_I64, 4, run_i64, RUN_I64);
+    add(&l, "csv_sizes", CHECKPOINT_I64, RUN_N_CSV, csv_sizes, CSV_SIZES);
+    add(&l, "snapshot_times", CHECKPOINT_F64, n_snap, r->snapshot_times, NULL);
+    add(&l, "snapshot_counts", CHECKPOINT_I64, n_snap, counts, NULL);
+    add(&l, "snapshot_files", CHECKPOINT_BYTES, names_len, names, NULL);
+    add_particles(&l, &s->p);
+    int rc = checkpoint_write(path, l.items, l.n, err, err_len);
+    free(counts);
+    free(names);
+    return rc;
+}
+
+/* ---- loading ----------------------------------------------------------------------------- */
+
+/* Copies array `name`, checked for its type, length and columns, into out. */
+static int take(const checkpoint_data *cd, const char *name, checkpoint_type type, size_t n,
+                const char *columns, void *out, char *err, size_t err_len)
+{
+    const checkpoint_array *a = checkpoint_find(cd, name, type, n, columns, err, err_len);
+    if (!a) return -1;
+    if (n > 0) memcpy(out, a->data, n * (type == CHECKPOINT_BYTES ? 1 : 8));
+    return 0;
+}
+
+static int load_particles(solver *s, const checkpoint_data *cd, char *err, size_t err_len)
+{
+    int64_t head[4];
+    if (take(cd, "solver_i64", CHECKPOINT_I64, 4, SOLVER_I64, head, err, err_len)) return -1;
+    particles *p = &s->p;
+    if (head[0] != DIM || head[1] != (int64_t)p->n_fluid) {
+        snprintf(err, err_len,
+                 "it holds %lld particles in %lldD, where its case makes %zu in %dD (a "
+                 "checkpoint of another case?)",
+                 (long long)head[1], (long long)head[0], p->n_fluid, DIM);
+        return -1;
+    }
+    size_t n = p->n_fluid;
+    s->step = head[2];
+    s->n_edbc = head[3];
+    int rc = take(cd, "id", CHECKPOINT_I64, n, NULL, p->id, err, err_len);
+    for (int d = 0; d < DIM && rc == 0; d++)
+        rc = take(cd, x_names[d], CHECKPOINT_F64, n, NULL, p->x[d], err, err_len) ||
+             take(cd, u_names[d], CHECKPOINT_F64, n, NULL, p->u[d], err, err_len);
+    if (rc == 0)
+        rc = take(cd, "rho", CHECKPOINT_F64, n, NULL, p->rho, err, err_len) ||
+             take(cd, "m", CHECKPOINT_F64, n, NULL, p->m, err, err_len);
+    p->n_total = n; /* the ghosts are made again by the next solver_prepare */
+    return rc ? -1 : 0;
+}
+
+static int load_solver_scalars(solver *s, const checkpoint_data *cd, char *err, size_t err_len)
+{
+    double v[5];
+    if (take(cd, "solver_f64", CHECKPOINT_F64, 5, SOLVER_F64, v, err, err_len)) return -1;
+    s->t = v[0];
+    s->last_dt = v[1];
+    s->max_acc = v[2];
+    s->work_in = v[3];
+    s->work_st = v[4];
+    return 0;
+}
+
+static int load_eta_control(eta_controller *e, const checkpoint_data *cd, char *err, size_t err_len)
+{
+    double v[8];
+    int64_t k[5];
+    if (take(cd, "eta_f64", CHECKPOINT_F64, 8, ETA_F64, v, err, err_len) ||
+        take(cd, "eta_i64", CHECKPOINT_I64, 5, ETA_I64, k, err, err_len) ||
+        take(cd, "eta_samples", CHECKPOINT_F64, ETA_HISTORY, NULL, e->samples, err, err_len))
+        return -1;
+    e->threshold = v[0];
+    e->period = v[1];
+    e->eta = v[2];
+    e->t_last = v[3];
+    e->eps_last = v[4];
+    e->integral = v[5];
+    e->eps_mean = v[6];
+    e->eps_expected = v[7];
+    e->switching = k[0] != 0;
+    e->kind = (eta_control_kind)k[1];
+    e->eta0_regime = k[2] != 0;
+    e->switches = k[3];
+    e->n_samples = k[4];
+    return 0;
+}
+
+/* The XDMF index: n names (each NUL-ended, one after the other), times and counts. */
+static int load_snapshot_index(run *r, const checkpoint_data *cd, int n, char *err, size_t err_len)
+{
+    const checkpoint_array *names =
+        checkpoint_find(cd, "snapshot_files", CHECKPOINT_BYTES, SIZE_MAX, NULL, err, err_len);
+    if (!names || run_reserve_snapshots(r, n)) return -1;
+    int64_t *counts = malloc((n ? (size_t)n : 1) * sizeof *counts);
+    int rc = !counts ||
+             take(cd, "snapshot_times", CHECKPOINT_F64, (size_t)n, NULL, r->snapshot_times, err,
+                  err_len) ||
+             take(cd, "snapshot_counts", CHECKPOINT_I64, (size_t)n, NULL, counts, err, err_len);
+    const char *at = names->data, *end = at ? at + names->n : NULL;
+    for (int k = 0; k < n && rc == 0; k++) {
+        const char *nul = at < end ? memchr(at, '\0', (size_t)(end - at)) : NULL;
+        if (!nul || nul == at || !(r->snapshot_files[k] = strdup(at))) {
+            snprintf(err, err_len, "dataset 'snapshot_files' does not hold %d names", n);
+            rc = -1;
+            break;
+        }
+        r->snapshot_counts[k] = (size_t)counts[k];
+        r->n_snapshots = k + 1; /* what close_run frees */
+        at = nul + 1;
+    }
+    free(counts);
+    return rc ? -1 : 0;
+}
+
+static int load_outputs(run *r, const checkpoint_data *cd, char *err, size_t err_len)
+{
+    double v[7];
+    int64_t k[4], sizes[RUN_N_CSV];
+    if (take(cd, "run_f64", CHECKPOINT_F64, 7, RUN_F64, v, err, err_len) ||
+        take(cd, "run_i64", CHECKPOINT_I64, 4, RUN_I64, k, err, err_len) ||
+        take(cd, "csv_sizes", CHECKPOINT_I64, RUN_N_CSV, CSV_SIZES, sizes, err, err_len))
+        return -1;
+    if (k[1] < 0 || k[1] > INT32_MAX || k[2] < 0 || k[2] > INT32_MAX) {
+        snprintf(err, err_len, "dataset 'run_i64' holds impossible counts");
+        return -1;
+    }
+    r->energy0 = v[0];
+    r->mass0 = v[1];
+    r->v0 = v[2];
+    r->ediss_period_start = v[3];
+    r->next_series = v[4];
+    r->next_snapshot = v[5];
+    r->next_image = v[6];
+    r->period = k[0];
+    r->n_images = (int)k[2];
+    r->speed_warned = (int)k[3];
+    for (int c = 0; c < RUN_N_CSV; c++) r->resume_sizes[c] = sizes[c];
+    return load_snapshot_index(r, cd, (int)k[1], err, err_len);
+}
+
+int restart_load(run *r, const checkpoint_data *cd, char *err, size_t err_len)
+{
+    solver *s = &r->s;
+    if (load_particles(s, cd, err, err_len) || load_solver_scalars(s, cd, err, err_len) ||
+        load_eta_control(&s->eta_control, cd, err, err_len) || load_outputs(r, cd, err, err_len))
+        return -1;
+    if (s->t > r->cfg->t_end) {
+        snprintf(err, err_len, "case.t_end = %g s is before the checkpoint's time, t = %.9g s",
+                 r->cfg->t_end, s->t);
+        return -1;
+    }
+    r->resumed = true;
+    solver_update_eos(s); /* p, V and u_wall of the loaded state */
+    return 0;
+}
+
+/* ---- the output files -------------------------------------------------------------------- */
+
+int restart_check_outputs(run *r, char *err, size_t err_len)
+{
+    for (int k = 0; k < RUN_N_CSV; k++) {
+        if (r->resume_sizes[k] < 0) continue;
+        char path[CONFIG_PATH_MAX + 64];
+        snprintf(path, sizeof path, "%s/%s", r->opt->output_dir, run_csv_name(k));
+        struct stat st;
+        if (stat(path, &st)) {
+            snprintf(err, err_len, "%s: %s", path, strerror(errno));
+            return -1;
+        }
+        if (!S_ISREG(st.st_mode) || (long long)st.st_size < r->resume_sizes[k]) {
+            snprintf(err, err_len,
+                     "%s holds %lld bytes, fewer than the %lld the checkpoint recorded (not the "
+                     "run that wrote the checkpoint?)",
+                     path, (long long)st.st_size, r->resume_sizes[k]);
+            return -1;
+        }
+    }
+    return 0;
+}
+
+/* The number in `name` = prefix NNNNNN suffix (six digits), or -1 for any other name. */
+static long numbered(const char *name, const char *prefix, const char *suffix)
+{
+    size_t lp = strlen(prefix);
+    if (strncmp(name, prefix, lp)) return -1;
+    long k = 0;
+    for (int i = 0; i < 6; i++) {
+        char c = name[lp + (size_t)i];
+        if (c < '0' || c > '9') return -1;
+        k = 10 * k + (c - '0');
+    }
+    return strcmp(name + lp + 6, suffix) == 0 ? k : -1;
+}
+
+/* Removes the files of dir named prefix NNNNNN suffix with NNNNNN >= first. */
+static void remove_numbered(const char *dir, const char *prefix, const char *suffix, long first)
+{
+    DIR *d = opendir(dir);
+    if (!d) return;
+    char path[CONFIG_PATH_MAX + 300];
+    for (struct dirent *e; (e = readdir(d));) {
+        if (numbered(e->d_name, prefix, suffix) < first) continue;
+        snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
+        remove(path);
+    }
+    closedir(d);
+}
+
+void restart_rewind_outputs(run *r)
+{
+    char dir[CONFIG_PATH_MAX + 64];
+    snprintf(dir, sizeof dir, "%s/snapshots", r->opt->output_dir);
+    remove_numbered(dir, "", ".h5", r->n_snapshots);
+    remove_numbered(dir, "", ".h5.tmp", 0); /* a write the end of the run cut short */
+    snprintf(dir, sizeof dir, "%s/images", r->opt->output_dir);
+    remove_numbered(dir, "particles_", ".png", r->n_images);
+    remove_numbered(dir, "particles_", ".png.tmp", 0);
+    snprintf(dir, sizeof dir, "%s/checkpoint.h5.tmp", r->opt->output_dir);
+    remove(dir);
+}

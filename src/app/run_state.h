@@ -1,0 +1,89 @@
+/* run_state: what a run holds besides the solver (its output files and the bookkeeping of
+ * what is due next), shared by the time loop (simulation.c) and the checkpoints (restart.c).
+ * Particle code: compiled for DIM = 2 and 3. */
+#ifndef VCSPH_RUN_STATE_H
+#define VCSPH_RUN_STATE_H
+
+#include "app/progress.h"
+#include "app/simulation.h"
+#include "diag/probes.h"
+#include "io/checkpoint.h"
+#include "io/csv.h"
+#include "scheme/solver.h"
+
+#include <stdbool.h>
+
+/* The CSV files of a run, in the order of the checkpoint's csv_sizes. */
+enum { RUN_CSV_TIMESERIES, RUN_CSV_EVENTS, RUN_CSV_DISSIPATION, RUN_CSV_PROBES, RUN_N_CSV };
+
+typedef struct {
+    solver s;
+    const config *cfg;
+    const run_options *opt;
+    char *case_text; /* resolved case.ini, also stored in every snapshot and checkpoint */
+    csv_file timeseries, events, probes_csv, dissipation;
+    probes probes;
+    double energy0; /* ekin + epot + eint (+ esurf) at t = 0 */
+    /* dissipation per excitation period (theory §10): the period that ends next, and
+       ediss where it started */
+    long period;
+    double ediss_period_start;
+    double t_stop; /* the prepared step ends at or before this time */
+    double mass0, v0;
+    double next_series, next_snapshot, next_image;
+    int n_images;
+    /* snapshot index for the XDMF file */
+    int n_snapshots, cap_snapshots;
+    char **snapshot_files;
+    double *snapshot_times;
+    size_t *snapshot_counts;
+    int speed_warned; /* U_max > c0/10 reported and not yet back below */
+    progress pr;
+    double next_checkpoint; /* wall-clock time (progress_wall_time) of the next checkpoint */
+    /* a restarted run: the sizes its CSV files had at the checkpoint (-1: not written) */
+    bool resumed;
+    long long resume_sizes[RUN_N_CSV];
+} run;
+
+/* The file name and the writer of CSV file k (RUN_CSV_...). */
+static inline const char *run_csv_name(int k)
+{
+    static const char *const names[RUN_N_CSV] = {"timeseries.csv", "events.csv", "dissipation.csv",
+                                                 "probes.csv"};
+    return names[k];
+}
+
+static inline csv_file *run_csv(run *r, int k)
+{
+    csv_file *files[RUN_N_CSV] = {&r->timeseries, &r->events, &r->dissipation, &r->probes_csv};
+    return files[k];
+}
+
+#define run_reserve_snapshots  DIM_NAME(run_reserve_snapshots)
+#define restart_save           DIM_NAME(restart_save)
+#define restart_load           DIM_NAME(restart_load)
+#define restart_check_outputs  DIM_NAME(restart_check_outputs)
+#define restart_rewind_outputs DIM_NAME(restart_rewind_outputs)
+
+/* Room for n snapshots in the XDMF index. Returns 0 or -1. */
+int run_reserve_snapshots(run *r, int n);
+
+/* Writes the state just after a step (before the next solver_prepare) to `path` atomically
+ * (checkpoint.h; the layout is in restart.c). The CSV files are synced first, so that the
+ * sizes the checkpoint records are on the disk. Returns 0, or -1 with a message. */
+int restart_save(run *r, const char *path, char *err, size_t err_len);
+
+/* Takes a run's state from a checkpoint read whole (checkpoint_read) into r, set up by
+ * solver_init for the checkpoint's case. Touches no file. Returns 0, or -1 with a message
+ * when the checkpoint does not fit the case (particle count, dimension, layout). */
+int restart_load(run *r, const checkpoint_data *cd, char *err, size_t err_len);
+
+/* Checks, touching nothing, that every CSV file the checkpoint recorded exists in the output
+ * directory and is at least as long as it was then. Returns 0, or -1 with a message. */
+int restart_check_outputs(run *r, char *err, size_t err_len);
+
+/* Removes what the run wrote after the checkpoint besides CSV rows: snapshots and images
+ * numbered from the checkpoint's counts on, and a half-written checkpoint.h5.tmp. */
+void restart_rewind_outputs(run *r);
+
+#endif
