@@ -1,5 +1,6 @@
 /* checkpoint: named arrays in one verified HDF5 file (checkpoint.h). */
 #include "io/checkpoint.h"
+#include "io/hdf5_errors.h"
 
 #include <errno.h>
 #include <fcntl.h>
@@ -26,48 +27,6 @@ static void set_err(char *err, size_t err_len, const char *fmt, ...)
     va_start(ap, fmt);
     vsnprintf(err, err_len, fmt, ap);
     va_end(ap);
-}
-
-/* HDF5 prints its error stack to stderr by default; a refused checkpoint must give one clear
- * message instead. The handler below prints nothing and keeps the innermost description of
- * the first failure (e.g. "data error detected by Fletcher32 checksum"), which the later
- * calls on the way out would otherwise clear. */
-enum { HDF5_DETAIL_LEN = 256 };
-
-typedef struct {
-    char detail[HDF5_DETAIL_LEN];
-    H5E_auto2_t saved_func;
-    void *saved_data;
-} hdf5_errors;
-
-static herr_t innermost(unsigned n, const H5E_error2_t *e, void *detail)
-{
-    if (n == 0 && e->desc) snprintf(detail, HDF5_DETAIL_LEN, "%s", e->desc);
-    return 0;
-}
-
-static herr_t capture(hid_t stack, void *client)
-{
-    hdf5_errors *h = client;
-    if (!h->detail[0]) H5Ewalk2(stack, H5E_WALK_UPWARD, innermost, h->detail);
-    return 0;
-}
-
-static void errors_begin(hdf5_errors *h)
-{
-    h->detail[0] = '\0';
-    H5Eget_auto2(H5E_DEFAULT, &h->saved_func, &h->saved_data);
-    H5Eset_auto2(H5E_DEFAULT, capture, h);
-}
-
-static void errors_end(const hdf5_errors *h)
-{
-    H5Eset_auto2(H5E_DEFAULT, h->saved_func, h->saved_data);
-}
-
-static const char *detail_or(const hdf5_errors *h, const char *fallback)
-{
-    return h->detail[0] ? h->detail : fallback;
 }
 
 /* ---- types ------------------------------------------------------------------------------- */
@@ -244,13 +203,13 @@ static int write_items(hid_t file, const checkpoint_item *items, int n_items, co
 {
     if (write_marker(file)) {
         set_err(err, err_len, "checkpoint %s: cannot write the format marker: %s", path,
-                detail_or(h, "HDF5 error"));
+                hdf5_errors_detail(h, "HDF5 error"));
         return -1;
     }
     for (int k = 0; k < n_items; k++) {
         if (write_item(file, &items[k])) {
             set_err(err, err_len, "checkpoint %s: cannot write dataset '%s': %s", path,
-                    items[k].name, detail_or(h, "HDF5 error"));
+                    items[k].name, hdf5_errors_detail(h, "HDF5 error"));
             return -1;
         }
     }
@@ -296,16 +255,19 @@ static int write_temp(const char *tmp, const checkpoint_item *items, int n_items
 {
     hid_t file = create_file(tmp);
     if (file < 0) {
-        set_err(err, err_len, "checkpoint %s: cannot create: %s", tmp, detail_or(h, "HDF5 error"));
+        set_err(err, err_len, "checkpoint %s: cannot create: %s", tmp,
+                hdf5_errors_detail(h, "HDF5 error"));
         return -1;
     }
     int rc = write_items(file, items, n_items, tmp, h, err, err_len);
     if (rc == 0 && H5Fflush(file, H5F_SCOPE_GLOBAL) < 0) {
-        set_err(err, err_len, "checkpoint %s: cannot flush: %s", tmp, detail_or(h, "HDF5 error"));
+        set_err(err, err_len, "checkpoint %s: cannot flush: %s", tmp,
+                hdf5_errors_detail(h, "HDF5 error"));
         rc = -1;
     }
     if (H5Fclose(file) < 0 && rc == 0) {
-        set_err(err, err_len, "checkpoint %s: cannot close: %s", tmp, detail_or(h, "HDF5 error"));
+        set_err(err, err_len, "checkpoint %s: cannot close: %s", tmp,
+                hdf5_errors_detail(h, "HDF5 error"));
         rc = -1;
     }
     if (rc == 0 && seal_file(tmp)) {
@@ -328,9 +290,9 @@ int checkpoint_write(const char *path, const checkpoint_item *items, int n_items
     memcpy(tmp, path, len);
     memcpy(tmp + len, temp_suffix, sizeof temp_suffix);
     hdf5_errors h;
-    errors_begin(&h);
+    hdf5_errors_begin(&h);
     int rc = write_temp(tmp, items, n_items, &h, err, err_len);
-    errors_end(&h);
+    hdf5_errors_end(&h);
     /* rename() replaces the old checkpoint in one step (POSIX): a crash before it keeps the
        old one whole, a crash after it finds the new one whole */
     if (rc == 0 && rename(tmp, path)) {
@@ -369,7 +331,8 @@ static int check_marker(hid_t file, const char *path, const hdf5_errors *h, char
 {
     /* a root object header that fails HDF5's checksum cannot even say what it holds */
     if (H5Aexists(file, "format") < 0) {
-        set_err(err, err_len, "%s: damaged HDF5 file (%s)", path, detail_or(h, "HDF5 error"));
+        set_err(err, err_len, "%s: damaged HDF5 file (%s)", path,
+                hdf5_errors_detail(h, "HDF5 error"));
         return -1;
     }
     char *format = read_string_attr(file, "format");
@@ -447,7 +410,7 @@ static int read_array(hid_t dset, checkpoint_array *a, const char *path, const h
     }
     if (H5Dread(dset, mem_type(a->type), H5S_ALL, H5S_ALL, H5P_DEFAULT, a->data) < 0) {
         set_err(err, err_len, "%s: damaged: dataset '%s' cannot be read (%s)", path, a->name,
-                detail_or(h, "HDF5 error"));
+                hdf5_errors_detail(h, "HDF5 error"));
         return -1;
     }
     return 0;
@@ -459,7 +422,7 @@ static int read_all(hid_t file, checkpoint_data *cd, const char *path, const hdf
     H5G_info_t info;
     if (H5Gget_info(file, &info) < 0) {
         set_err(err, err_len, "%s: damaged: cannot list its contents (%s)", path,
-                detail_or(h, "HDF5 error"));
+                hdf5_errors_detail(h, "HDF5 error"));
         return -1;
     }
     cd->arrays = calloc(info.nlinks ? info.nlinks : 1, sizeof *cd->arrays);
@@ -476,7 +439,7 @@ static int read_all(hid_t file, checkpoint_data *cd, const char *path, const hdf
         if (dset < 0) {
             set_err(err, err_len, "%s: damaged or not a vcsph checkpoint: object %llu (%s) %s",
                     path, (unsigned long long)k, len > 0 ? a->name : "?",
-                    detail_or(h, "is not a dataset"));
+                    hdf5_errors_detail(h, "is not a dataset"));
             return -1;
         }
         int rc = read_array(dset, a, path, h, err, err_len);
@@ -561,13 +524,14 @@ static int read_file(const char *path, checkpoint_data *cd, const hdf5_errors *h
 {
     hid_t file = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT);
     if (file < 0) {
-        set_err(err, err_len, "%s: damaged HDF5 file (%s)", path, detail_or(h, "cannot open"));
+        set_err(err, err_len, "%s: damaged HDF5 file (%s)", path,
+                hdf5_errors_detail(h, "cannot open"));
         return -1;
     }
     int rc = check_marker(file, path, h, err, err_len);
     if (rc == 0) rc = read_all(file, cd, path, h, err, err_len);
     if (H5Fclose(file) < 0 && rc == 0) {
-        set_err(err, err_len, "%s: damaged (%s)", path, detail_or(h, "cannot close"));
+        set_err(err, err_len, "%s: damaged (%s)", path, hdf5_errors_detail(h, "cannot close"));
         rc = -1;
     }
     return rc;
@@ -578,12 +542,12 @@ int checkpoint_read(const char *path, checkpoint_data *cd, char *err, size_t err
     memset(cd, 0, sizeof *cd);
     long long size;
     hdf5_errors h;
-    errors_begin(&h); /* H5Fis_hdf5 of a foreign file reports to the error stack too */
+    hdf5_errors_begin(&h); /* H5Fis_hdf5 of a foreign file reports to the error stack too */
     int rc = check_file(path, &size, err, err_len) || check_header(path, size, err, err_len) ||
                      read_file(path, cd, &h, err, err_len)
                  ? -1
                  : 0;
-    errors_end(&h);
+    hdf5_errors_end(&h);
     if (rc) checkpoint_data_free(cd);
     return rc;
 }

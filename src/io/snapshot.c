@@ -1,5 +1,6 @@
 /* snapshot: particle fields to HDF5 files (design §5) and the XDMF index ParaView opens. */
 #include "io/snapshot.h"
+#include "io/hdf5_errors.h"
 
 #include <errno.h>
 #include <hdf5.h>
@@ -29,51 +30,19 @@ static void set_err(char *err, size_t err_len, const char *fmt, ...)
 }
 
 /* Where a failure of snapshot_write is reported: the caller's buffer, plus what HDF5 said
- * about the first failed call. That has to be caught when it happens, because every later
- * HDF5 call (even the successful closes on the way out) clears the library's error stack. */
-enum { HDF5_DETAIL_LEN = 256 };
-
+ * about the first failed call (caught when it happens: every later HDF5 call, even the
+ * successful closes on the way out, clears the library's error stack). */
 typedef struct {
     char *err;
     size_t err_len;
-    char hdf5[HDF5_DETAIL_LEN];
-    H5E_auto2_t saved_func;
-    void *saved_data;
+    hdf5_errors hdf5; /* HDF5 silenced while a snapshot is written; its first failure */
 } report;
-
-/* The innermost error carries the useful part (e.g. "Permission denied" from the file
- * driver); the API-level entries only say which call failed. */
-static herr_t hdf5_innermost(unsigned n, const H5E_error2_t *e, void *detail)
-{
-    if (n == 0 && e->desc) snprintf(detail, HDF5_DETAIL_LEN, "%s", e->desc);
-    return 0;
-}
-
-/* HDF5's automatic error handler while a snapshot is written. The default one prints the
- * error stack to stderr; this one prints nothing and keeps the first failure for err. */
-static herr_t hdf5_capture(hid_t stack, void *client)
-{
-    report *r = client;
-    if (!r->hdf5[0]) H5Ewalk2(stack, H5E_WALK_UPWARD, hdf5_innermost, r->hdf5);
-    return 0;
-}
-
-static void hdf5_capture_begin(report *r)
-{
-    H5Eget_auto2(H5E_DEFAULT, &r->saved_func, &r->saved_data);
-    H5Eset_auto2(H5E_DEFAULT, hdf5_capture, r);
-}
-
-static void hdf5_capture_end(const report *r)
-{
-    H5Eset_auto2(H5E_DEFAULT, r->saved_func, r->saved_data);
-}
 
 /* Fills err with what failed on which object, and HDF5's explanation when it gave one. */
 static void fail_hdf5(const report *r, const char *what, const char *name)
 {
-    if (r->hdf5[0])
-        set_err(r->err, r->err_len, "snapshot: %s '%s': %s", what, name, r->hdf5);
+    if (r->hdf5.detail[0])
+        set_err(r->err, r->err_len, "snapshot: %s '%s': %s", what, name, r->hdf5.detail);
     else
         set_err(r->err, r->err_len, "snapshot: %s '%s'", what, name);
 }
@@ -418,9 +387,9 @@ int snapshot_write(const char *path, size_t n, const snapshot_field *fields, int
         return -1;
     }
     report r = {.err = err, .err_len = err_len};
-    hdf5_capture_begin(&r);
+    hdf5_errors_begin(&r.hdf5);
     int rc = write_h5_file(path, tmp, n, fields, n_fields, attrs, &r);
-    hdf5_capture_end(&r);
+    hdf5_errors_end(&r.hdf5);
     free(tmp);
     return rc;
 }
