@@ -157,7 +157,7 @@ static int take(const checkpoint_data *cd, const char *name, checkpoint_type typ
 {
     const checkpoint_array *a = checkpoint_find(cd, name, type, n, columns, err, err_len);
     if (!a) return -1;
-    if (n > 0) memcpy(out, a->data, n * (type == CHECKPOINT_BYTES ? 1 : 8));
+    if (n > 0) memcpy(out, a->data, n * checkpoint_type_size(type));
     return 0;
 }
 

@@ -1,11 +1,13 @@
 /* checkpoint: named arrays in one verified HDF5 file (checkpoint.h). */
 #include "io/checkpoint.h"
+#include "io/atomic_file.h"
+#include "io/hdf5_attr.h"
 #include "io/hdf5_errors.h"
+#include "io/io_error.h"
 
 #include <errno.h>
 #include <fcntl.h>
 #include <hdf5.h>
-#include <stdarg.h>
 #include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -13,25 +15,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-static const char temp_suffix[] = ".tmp";
-
-/* ---- errors ------------------------------------------------------------------------------ */
-
-static void set_err(char *err, size_t err_len, const char *fmt, ...)
-    __attribute__((format(printf, 3, 4)));
-
-static void set_err(char *err, size_t err_len, const char *fmt, ...)
-{
-    if (!err || err_len == 0) return;
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(err, err_len, fmt, ap);
-    va_end(ap);
-}
-
 /* ---- types ------------------------------------------------------------------------------- */
-
-static size_t elem_size(checkpoint_type t) { return t == CHECKPOINT_BYTES ? 1 : 8; }
 
 static hid_t mem_type(checkpoint_type t)
 {
@@ -135,34 +119,13 @@ static int seal_file(const char *path)
 
 /* ---- writing ----------------------------------------------------------------------------- */
 
-static int write_string_attr(hid_t loc, const char *name, const char *text)
-{
-    hid_t type = H5Tcopy(H5T_C_S1), space = H5Screate(H5S_SCALAR);
-    int rc = -1;
-    if (type >= 0 && space >= 0 && H5Tset_size(type, strlen(text) + 1) >= 0 &&
-        H5Tset_strpad(type, H5T_STR_NULLTERM) >= 0) {
-        hid_t attr = H5Acreate2(loc, name, type, space, H5P_DEFAULT, H5P_DEFAULT);
-        if (attr >= 0) {
-            rc = H5Awrite(attr, type, text) < 0 ? -1 : 0;
-            if (H5Aclose(attr) < 0) rc = -1;
-        }
-    }
-    if (space >= 0) H5Sclose(space);
-    if (type >= 0) H5Tclose(type);
-    return rc;
-}
-
 static int write_marker(hid_t file)
 {
     const int version = CHECKPOINT_VERSION;
-    if (write_string_attr(file, "format", CHECKPOINT_FORMAT)) return -1;
-    hid_t space = H5Screate(H5S_SCALAR);
-    if (space < 0) return -1;
-    hid_t attr = H5Acreate2(file, "version", H5T_STD_I32LE, space, H5P_DEFAULT, H5P_DEFAULT);
-    int rc = attr >= 0 && H5Awrite(attr, H5T_NATIVE_INT, &version) >= 0 ? 0 : -1;
-    if (attr >= 0 && H5Aclose(attr) < 0) rc = -1;
-    H5Sclose(space);
-    return rc;
+    return hdf5_attr_write_string(file, "format", CHECKPOINT_FORMAT) ||
+                   hdf5_attr_write_scalar(file, "version", H5T_STD_I32LE, H5T_NATIVE_INT, &version)
+               ? -1
+               : 0;
 }
 
 /* Chunked storage, required by the Fletcher32 filter; an empty array gets an extendible
@@ -170,7 +133,7 @@ static int write_marker(hid_t file)
  * the same file. */
 static hid_t create_dataset(hid_t file, const checkpoint_item *it)
 {
-    const hsize_t chunk_max = CHECKPOINT_CHUNK_BYTES / elem_size(it->type);
+    const hsize_t chunk_max = CHECKPOINT_CHUNK_BYTES / checkpoint_type_size(it->type);
     hsize_t dims[1] = {it->n}, max_dims[1] = {it->n ? it->n : H5S_UNLIMITED};
     hsize_t chunk[1] = {it->n == 0 ? 1 : it->n < chunk_max ? it->n : chunk_max};
     hid_t space = H5Screate_simple(1, dims, max_dims);
@@ -193,7 +156,7 @@ static int write_item(hid_t file, const checkpoint_item *it)
     if (it->n > 0 &&
         H5Dwrite(dset, mem_type(it->type), H5S_ALL, H5S_ALL, H5P_DEFAULT, it->data) < 0)
         rc = -1;
-    if (rc == 0 && it->columns) rc = write_string_attr(dset, "columns", it->columns);
+    if (rc == 0 && it->columns) rc = hdf5_attr_write_string(dset, "columns", it->columns);
     if (H5Dclose(dset) < 0) rc = -1;
     return rc;
 }
@@ -202,14 +165,14 @@ static int write_items(hid_t file, const checkpoint_item *items, int n_items, co
                        const hdf5_errors *h, char *err, size_t err_len)
 {
     if (write_marker(file)) {
-        set_err(err, err_len, "checkpoint %s: cannot write the format marker: %s", path,
-                hdf5_errors_detail(h, "HDF5 error"));
+        io_error(err, err_len, "checkpoint %s: cannot write the format marker: %s", path,
+                 hdf5_errors_detail(h, "HDF5 error"));
         return -1;
     }
     for (int k = 0; k < n_items; k++) {
         if (write_item(file, &items[k])) {
-            set_err(err, err_len, "checkpoint %s: cannot write dataset '%s': %s", path,
-                    items[k].name, hdf5_errors_detail(h, "HDF5 error"));
+            io_error(err, err_len, "checkpoint %s: cannot write dataset '%s': %s", path,
+                     items[k].name, hdf5_errors_detail(h, "HDF5 error"));
             return -1;
         }
     }
@@ -255,24 +218,24 @@ static int write_temp(const char *tmp, const checkpoint_item *items, int n_items
 {
     hid_t file = create_file(tmp);
     if (file < 0) {
-        set_err(err, err_len, "checkpoint %s: cannot create: %s", tmp,
-                hdf5_errors_detail(h, "HDF5 error"));
+        io_error(err, err_len, "checkpoint %s: cannot create: %s", tmp,
+                 hdf5_errors_detail(h, "HDF5 error"));
         return -1;
     }
     int rc = write_items(file, items, n_items, tmp, h, err, err_len);
     if (rc == 0 && H5Fflush(file, H5F_SCOPE_GLOBAL) < 0) {
-        set_err(err, err_len, "checkpoint %s: cannot flush: %s", tmp,
-                hdf5_errors_detail(h, "HDF5 error"));
+        io_error(err, err_len, "checkpoint %s: cannot flush: %s", tmp,
+                 hdf5_errors_detail(h, "HDF5 error"));
         rc = -1;
     }
     if (H5Fclose(file) < 0 && rc == 0) {
-        set_err(err, err_len, "checkpoint %s: cannot close: %s", tmp,
-                hdf5_errors_detail(h, "HDF5 error"));
+        io_error(err, err_len, "checkpoint %s: cannot close: %s", tmp,
+                 hdf5_errors_detail(h, "HDF5 error"));
         rc = -1;
     }
     if (rc == 0 && seal_file(tmp)) {
-        set_err(err, err_len, "checkpoint %s: cannot write its header or sync it: %s", tmp,
-                strerror(errno));
+        io_error(err, err_len, "checkpoint %s: cannot write its header or sync it: %s", tmp,
+                 strerror(errno));
         rc = -1;
     }
     return rc;
@@ -281,25 +244,20 @@ static int write_temp(const char *tmp, const checkpoint_item *items, int n_items
 int checkpoint_write(const char *path, const checkpoint_item *items, int n_items, char *err,
                      size_t err_len)
 {
-    size_t len = strlen(path);
-    char *tmp = malloc(len + sizeof temp_suffix);
+    char *tmp = atomic_temp_path(path);
     if (!tmp) {
-        set_err(err, err_len, "checkpoint %s: out of memory", path);
+        io_error(err, err_len, "checkpoint %s: out of memory", path);
         return -1;
     }
-    memcpy(tmp, path, len);
-    memcpy(tmp + len, temp_suffix, sizeof temp_suffix);
     hdf5_errors h;
     hdf5_errors_begin(&h);
     int rc = write_temp(tmp, items, n_items, &h, err, err_len);
     hdf5_errors_end(&h);
-    /* rename() replaces the old checkpoint in one step (POSIX): a crash before it keeps the
-       old one whole, a crash after it finds the new one whole */
-    if (rc == 0 && rename(tmp, path)) {
-        set_err(err, err_len, "checkpoint: cannot rename %s to %s: %s", tmp, path, strerror(errno));
-        rc = -1;
-    }
-    if (rc) remove(tmp);
+    /* a crash before the rename keeps the old checkpoint whole, one after it the new one */
+    if (rc == 0)
+        rc = atomic_commit("checkpoint", tmp, path, err, err_len);
+    else
+        remove(tmp);
     if (rc == 0) sync_parent(path); /* best effort: the rename itself has succeeded */
     free(tmp);
     return rc;
@@ -307,54 +265,31 @@ int checkpoint_write(const char *path, const checkpoint_item *items, int n_items
 
 /* ---- reading ----------------------------------------------------------------------------- */
 
-static char *read_string_attr(hid_t loc, const char *name)
-{
-    if (H5Aexists(loc, name) <= 0) return NULL;
-    hid_t attr = H5Aopen(loc, name, H5P_DEFAULT);
-    if (attr < 0) return NULL;
-    hid_t type = H5Aget_type(attr);
-    char *text = NULL;
-    if (type >= 0 && H5Tget_class(type) == H5T_STRING && !H5Tis_variable_str(type)) {
-        text = calloc(H5Tget_size(type) + 1, 1);
-        if (text && H5Aread(attr, type, text) < 0) {
-            free(text);
-            text = NULL;
-        }
-    }
-    if (type >= 0) H5Tclose(type);
-    H5Aclose(attr);
-    return text;
-}
-
 static int check_marker(hid_t file, const char *path, const hdf5_errors *h, char *err,
                         size_t err_len)
 {
     /* a root object header that fails HDF5's checksum cannot even say what it holds */
     if (H5Aexists(file, "format") < 0) {
-        set_err(err, err_len, "%s: damaged HDF5 file (%s)", path,
-                hdf5_errors_detail(h, "HDF5 error"));
+        io_error(err, err_len, "%s: damaged HDF5 file (%s)", path,
+                 hdf5_errors_detail(h, "HDF5 error"));
         return -1;
     }
-    char *format = read_string_attr(file, "format");
+    char *format = hdf5_attr_read_string(file, "format");
     bool ours = format && strcmp(format, CHECKPOINT_FORMAT) == 0;
     free(format);
     if (!ours) {
-        set_err(err, err_len,
-                "%s: not a vcsph checkpoint (an HDF5 file without the format marker '%s')", path,
-                CHECKPOINT_FORMAT);
+        io_error(err, err_len,
+                 "%s: not a vcsph checkpoint (an HDF5 file without the format marker '%s')", path,
+                 CHECKPOINT_FORMAT);
         return -1;
     }
     int version = -1;
-    hid_t attr = H5Aexists(file, "version") > 0 ? H5Aopen(file, "version", H5P_DEFAULT) : -1;
-    if (attr >= 0) {
-        if (H5Aread(attr, H5T_NATIVE_INT, &version) < 0) version = -1;
-        H5Aclose(attr);
-    }
+    if (hdf5_attr_read_scalar(file, "version", H5T_NATIVE_INT, &version)) version = -1;
     if (version != CHECKPOINT_VERSION) {
-        set_err(err, err_len,
-                "%s: checkpoint format version %d, but this vcsph reads version %d only "
-                "(continue it with the vcsph that wrote it)",
-                path, version, CHECKPOINT_VERSION);
+        io_error(err, err_len,
+                 "%s: checkpoint format version %d, but this vcsph reads version %d only "
+                 "(continue it with the vcsph that wrote it)",
+                 path, version, CHECKPOINT_VERSION);
         return -1;
     }
     return 0;
@@ -393,24 +328,24 @@ static int read_array(hid_t dset, checkpoint_array *a, const char *path, const h
     int type = type_of_dataset(dset);
     long long n = dataset_length(dset);
     if (type < 0 || n < 0 || !has_fletcher32(dset)) {
-        set_err(err, err_len,
-                "%s: not a vcsph checkpoint (dataset '%s' is not a 1-D checksummed array of "
-                "float64, int64 or bytes)",
-                path, a->name);
+        io_error(err, err_len,
+                 "%s: not a vcsph checkpoint (dataset '%s' is not a 1-D checksummed array of "
+                 "float64, int64 or bytes)",
+                 path, a->name);
         return -1;
     }
     a->type = (checkpoint_type)type;
     a->n = (size_t)n;
-    a->columns = read_string_attr(dset, "columns");
+    a->columns = hdf5_attr_read_string(dset, "columns");
     if (a->n == 0) return 0;
-    a->data = malloc(a->n * elem_size(a->type));
+    a->data = malloc(a->n * checkpoint_type_size(a->type));
     if (!a->data) {
-        set_err(err, err_len, "%s: out of memory for dataset '%s'", path, a->name);
+        io_error(err, err_len, "%s: out of memory for dataset '%s'", path, a->name);
         return -1;
     }
     if (H5Dread(dset, mem_type(a->type), H5S_ALL, H5S_ALL, H5P_DEFAULT, a->data) < 0) {
-        set_err(err, err_len, "%s: damaged: dataset '%s' cannot be read (%s)", path, a->name,
-                hdf5_errors_detail(h, "HDF5 error"));
+        io_error(err, err_len, "%s: damaged: dataset '%s' cannot be read (%s)", path, a->name,
+                 hdf5_errors_detail(h, "HDF5 error"));
         return -1;
     }
     return 0;
@@ -421,13 +356,13 @@ static int read_all(hid_t file, checkpoint_data *cd, const char *path, const hdf
 {
     H5G_info_t info;
     if (H5Gget_info(file, &info) < 0) {
-        set_err(err, err_len, "%s: damaged: cannot list its contents (%s)", path,
-                hdf5_errors_detail(h, "HDF5 error"));
+        io_error(err, err_len, "%s: damaged: cannot list its contents (%s)", path,
+                 hdf5_errors_detail(h, "HDF5 error"));
         return -1;
     }
     cd->arrays = calloc(info.nlinks ? info.nlinks : 1, sizeof *cd->arrays);
     if (!cd->arrays) {
-        set_err(err, err_len, "%s: out of memory", path);
+        io_error(err, err_len, "%s: out of memory", path);
         return -1;
     }
     for (hsize_t k = 0; k < info.nlinks; k++) {
@@ -437,9 +372,9 @@ static int read_all(hid_t file, checkpoint_data *cd, const char *path, const hdf
         hid_t dset = len > 0 && (size_t)len < sizeof a->name ? H5Dopen2(file, a->name, H5P_DEFAULT)
                                                              : H5I_INVALID_HID;
         if (dset < 0) {
-            set_err(err, err_len, "%s: damaged or not a vcsph checkpoint: object %llu (%s) %s",
-                    path, (unsigned long long)k, len > 0 ? a->name : "?",
-                    hdf5_errors_detail(h, "is not a dataset"));
+            io_error(err, err_len, "%s: damaged or not a vcsph checkpoint: object %llu (%s) %s",
+                     path, (unsigned long long)k, len > 0 ? a->name : "?",
+                     hdf5_errors_detail(h, "is not a dataset"));
             return -1;
         }
         int rc = read_array(dset, a, path, h, err, err_len);
@@ -454,15 +389,15 @@ static int check_file(const char *path, long long *size, char *err, size_t err_l
 {
     struct stat st;
     if (stat(path, &st)) {
-        set_err(err, err_len, "%s: cannot open: %s", path, strerror(errno));
+        io_error(err, err_len, "%s: cannot open: %s", path, strerror(errno));
         return -1;
     }
     if (!S_ISREG(st.st_mode)) {
-        set_err(err, err_len, "%s: not a regular file", path);
+        io_error(err, err_len, "%s: not a regular file", path);
         return -1;
     }
     if (st.st_size == 0) {
-        set_err(err, err_len, "%s: empty file, not a checkpoint", path);
+        io_error(err, err_len, "%s: empty file, not a checkpoint", path);
         return -1;
     }
     *size = (long long)st.st_size;
@@ -473,11 +408,11 @@ static int check_file(const char *path, long long *size, char *err, size_t err_l
 static void foreign(const char *path, char *err, size_t err_len)
 {
     if (H5Fis_hdf5(path) > 0)
-        set_err(err, err_len,
-                "%s: not a vcsph checkpoint (an HDF5 file without the '%.16s' header)", path,
-                header_magic);
+        io_error(err, err_len,
+                 "%s: not a vcsph checkpoint (an HDF5 file without the '%.16s' header)", path,
+                 header_magic);
     else
-        set_err(err, err_len, "%s: not a vcsph checkpoint (not an HDF5 file)", path);
+        io_error(err, err_len, "%s: not a vcsph checkpoint (not an HDF5 file)", path);
 }
 
 /* The header (see "the user block"): ours, our version, the file whole and unchanged. */
@@ -485,7 +420,7 @@ static int check_header(const char *path, long long size, char *err, size_t err_
 {
     FILE *f = fopen(path, "rb");
     if (!f) {
-        set_err(err, err_len, "%s: cannot open: %s", path, strerror(errno));
+        io_error(err, err_len, "%s: cannot open: %s", path, strerror(errno));
         return -1;
     }
     char header[HEADER_SIZE + 1] = {0};
@@ -498,21 +433,21 @@ static int check_header(const char *path, long long size, char *err, size_t err_
     if (strncmp(header, header_magic, got < strlen(header_magic) ? got : strlen(header_magic)))
         foreign(path, err, err_len);
     else if (got < HEADER_SIZE)
-        set_err(err, err_len, "%s: truncated (%lld bytes)", path, size);
+        io_error(err, err_len, "%s: truncated (%lld bytes)", path, size);
     else if (sscanf(header, HEADER_SCAN, &version, &bytes, &stored) != 3)
-        set_err(err, err_len, "%s: damaged header", path);
+        io_error(err, err_len, "%s: damaged header", path);
     else if (version != CHECKPOINT_VERSION)
-        set_err(err, err_len,
-                "%s: checkpoint format version %d, but this vcsph reads version %d only "
-                "(continue it with the vcsph that wrote it)",
-                path, version, CHECKPOINT_VERSION);
+        io_error(err, err_len,
+                 "%s: checkpoint format version %d, but this vcsph reads version %d only "
+                 "(continue it with the vcsph that wrote it)",
+                 path, version, CHECKPOINT_VERSION);
     else if (bytes != size)
-        set_err(err, err_len, "%s: %s: %lld bytes, written with %lld", path,
-                size < bytes ? "truncated" : "damaged", size, bytes);
+        io_error(err, err_len, "%s: %s: %lld bytes, written with %lld", path,
+                 size < bytes ? "truncated" : "damaged", size, bytes);
     else if (hash_file(f, &hash))
-        set_err(err, err_len, "%s: cannot read: %s", path, strerror(errno));
+        io_error(err, err_len, "%s: cannot read: %s", path, strerror(errno));
     else if (hash != stored)
-        set_err(err, err_len, "%s: damaged: its checksum does not match its contents", path);
+        io_error(err, err_len, "%s: damaged: its checksum does not match its contents", path);
     else
         rc = 0;
     fclose(f);
@@ -524,14 +459,14 @@ static int read_file(const char *path, checkpoint_data *cd, const hdf5_errors *h
 {
     hid_t file = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT);
     if (file < 0) {
-        set_err(err, err_len, "%s: damaged HDF5 file (%s)", path,
-                hdf5_errors_detail(h, "cannot open"));
+        io_error(err, err_len, "%s: damaged HDF5 file (%s)", path,
+                 hdf5_errors_detail(h, "cannot open"));
         return -1;
     }
     int rc = check_marker(file, path, h, err, err_len);
     if (rc == 0) rc = read_all(file, cd, path, h, err, err_len);
     if (H5Fclose(file) < 0 && rc == 0) {
-        set_err(err, err_len, "%s: damaged (%s)", path, hdf5_errors_detail(h, "cannot close"));
+        io_error(err, err_len, "%s: damaged (%s)", path, hdf5_errors_detail(h, "cannot close"));
         rc = -1;
     }
     return rc;
@@ -578,13 +513,13 @@ const checkpoint_array *checkpoint_find(const checkpoint_data *cd, const char *n
             columns ? a->columns && strcmp(a->columns, columns) == 0 : a->columns == NULL;
         if (a->type == type && (n == SIZE_MAX || a->n == n) && same_columns) return a;
         if (!same_columns)
-            set_err(err, err_len, "dataset '%s' holds (%s), where (%s) is expected", name,
-                    a->columns ? a->columns : "no column names", columns ? columns : "none");
+            io_error(err, err_len, "dataset '%s' holds (%s), where (%s) is expected", name,
+                     a->columns ? a->columns : "no column names", columns ? columns : "none");
         else
-            set_err(err, err_len, "dataset '%s' holds %zu %s values, where %zu %s are expected",
-                    name, a->n, type_name(a->type), n == SIZE_MAX ? a->n : n, type_name(type));
+            io_error(err, err_len, "dataset '%s' holds %zu %s values, where %zu %s are expected",
+                     name, a->n, type_name(a->type), n == SIZE_MAX ? a->n : n, type_name(type));
         return NULL;
     }
-    set_err(err, err_len, "no dataset '%s'", name);
+    io_error(err, err_len, "no dataset '%s'", name);
     return NULL;
 }

@@ -33,6 +33,12 @@
 
 typedef enum { CHECKPOINT_F64, CHECKPOINT_I64, CHECKPOINT_BYTES } checkpoint_type;
 
+/* Bytes of one value of type t. */
+static inline size_t checkpoint_type_size(checkpoint_type t)
+{
+    return t == CHECKPOINT_BYTES ? 1 : 8;
+}
+
 /* One array: n values of `type` at data (n may be 0); columns: NULL, or the names of the
  * entries, comma-separated (stored as the dataset's "columns" attribute). */
 typedef struct {

@@ -4,15 +4,14 @@
 #include <errno.h>
 #include <math.h>
 #include <png.h>
-#include <stdarg.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "io/atomic_file.h"
 #include "io/font5x7.h"
-
-static const char temp_suffix[] = ".tmp";
+#include "io/io_error.h"
 
 /* ---------------------------------------------------------------------------------------- */
 /* Layout constants (pixels)                                                                 */
@@ -34,18 +33,6 @@ enum {
     BAR_MIN_HEIGHT = 3 * LINE + 10,
     TIME_GAP = 2 * ADVANCE, /* between the title and the time */
 };
-
-/* ---------------------------------------------------------------------------------------- */
-/* Errors                                                                                    */
-
-static void set_err(char *err, size_t err_len, const char *fmt, ...)
-{
-    if (!err || err_len == 0) return;
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(err, err_len, fmt, ap);
-    va_end(ap);
-}
 
 /* ---------------------------------------------------------------------------------------- */
 /* Colours                                                                                   */
@@ -181,21 +168,21 @@ enum { TEXT_BUF = 64 }; /* "t = %.3f s" of a huge time is cut here, harmlessly *
 static int check_frame(const image_frame *f, int pixels_wide, char *err, size_t err_len)
 {
     if (pixels_wide < 1 || pixels_wide > IMAGE_MAX_SIDE) {
-        set_err(err, err_len, "image: pixels_wide = %d is not in 1..%d", pixels_wide,
-                IMAGE_MAX_SIDE);
+        io_error(err, err_len, "image: pixels_wide = %d is not in 1..%d", pixels_wide,
+                 IMAGE_MAX_SIDE);
         return -1;
     }
     if (!(isfinite(f->width) && isfinite(f->height) && f->width > 0 && f->height > 0)) {
-        set_err(err, err_len, "image: bad tank size %g x %g m", f->width, f->height);
+        io_error(err, err_len, "image: bad tank size %g x %g m", f->width, f->height);
         return -1;
     }
     if (!(isfinite(f->vmin) && isfinite(f->vmax) && f->vmin < f->vmax)) {
-        set_err(err, err_len, "image: bad colour range [%g, %g] (needs vmin < vmax)", f->vmin,
-                f->vmax);
+        io_error(err, err_len, "image: bad colour range [%g, %g] (needs vmin < vmax)", f->vmin,
+                 f->vmax);
         return -1;
     }
     if (!(0.5 * f->vmax - 0.5 * f->vmin > 0)) {
-        set_err(err, err_len, "image: colour range [%g, %g] too narrow", f->vmin, f->vmax);
+        io_error(err, err_len, "image: colour range [%g, %g] too narrow", f->vmin, f->vmax);
         return -1;
     }
     return 0;
@@ -228,14 +215,14 @@ int image_layout_of(const image_frame *f, int pixels_wide, image_layout *l, char
                     size_t err_len)
 {
     if (!f || !l) {
-        set_err(err, err_len, "image: no frame");
+        io_error(err, err_len, "image: no frame");
         return -1;
     }
     if (check_frame(f, pixels_wide, err, err_len) != 0) return -1;
     double tank_h = pixels_wide * (f->height / f->width);
     if (!(tank_h <= IMAGE_MAX_SIDE)) {
-        set_err(err, err_len, "image: a tank %g x %g m drawn %d px wide is too tall", f->width,
-                f->height, pixels_wide);
+        io_error(err, err_len, "image: a tank %g x %g m drawn %d px wide is too tall", f->width,
+                 f->height, pixels_wide);
         return -1;
     }
     l->tank_width = pixels_wide;
@@ -259,8 +246,8 @@ int image_layout_of(const image_frame *f, int pixels_wide, image_layout *l, char
     /* the lowest tick label hangs half a glyph below the bar */
     long height = (long)l->bar_top + l->bar_height + GLYPH_H / 2 + MARGIN;
     if (width > IMAGE_MAX_SIDE || height > IMAGE_MAX_SIDE) {
-        set_err(err, err_len, "image: %ld x %ld px is over the limit of %d", width, height,
-                IMAGE_MAX_SIDE);
+        io_error(err, err_len, "image: %ld x %ld px is over the limit of %d", width, height,
+                 IMAGE_MAX_SIDE);
         return -1;
     }
     l->width = (int)width;
@@ -353,11 +340,11 @@ static void draw_frame(canvas *c, const image_frame *f, const image_layout *l)
 static int check_particles(const image_frame *f, char *err, size_t err_len)
 {
     if (f->n > 0 && (!f->x || !f->y || !f->value)) {
-        set_err(err, err_len, "image: %zu particles without positions or values", f->n);
+        io_error(err, err_len, "image: %zu particles without positions or values", f->n);
         return -1;
     }
     if (!(isfinite(f->radius) && f->radius >= 0)) {
-        set_err(err, err_len, "image: bad disc radius %g m", f->radius);
+        io_error(err, err_len, "image: bad disc radius %g m", f->radius);
         return -1;
     }
     return 0;
@@ -373,7 +360,7 @@ static int encode_png(const char *file, const canvas *c, char *err, size_t err_l
     img.format = PNG_FORMAT_RGB;
     /* libpng closes the file and checks that close; on failure it removes the file */
     if (!png_image_write_to_file(&img, file, 0, c->rgb, 0, NULL)) {
-        set_err(err, err_len, "image: cannot write '%s': %s", file, img.message);
+        io_error(err, err_len, "image: cannot write '%s': %s", file, img.message);
         png_image_free(&img);
         return -1;
     }
@@ -381,24 +368,19 @@ static int encode_png(const char *file, const canvas *c, char *err, size_t err_l
     return 0;
 }
 
-/* Encodes to path.tmp and renames: rename() replaces the target in one step (POSIX), so a
- * reader sees the previous complete image or the new one, never half a file. */
+/* Encodes to path.tmp and renames it over path (atomic_file.h). */
 static int write_atomically(const char *path, const canvas *c, char *err, size_t err_len)
 {
-    size_t len = strlen(path);
-    char *tmp = malloc(len + sizeof temp_suffix);
+    char *tmp = atomic_temp_path(path);
     if (!tmp) {
-        set_err(err, err_len, "image: out of memory");
+        io_error(err, err_len, "image: out of memory");
         return -1;
     }
-    memcpy(tmp, path, len);
-    memcpy(tmp + len, temp_suffix, sizeof temp_suffix);
     int rc = encode_png(tmp, c, err, err_len);
-    if (rc == 0 && rename(tmp, path) != 0) {
-        set_err(err, err_len, "image: cannot rename '%s' to '%s': %s", tmp, path, strerror(errno));
-        rc = -1;
-    }
-    if (rc != 0) remove(tmp);
+    if (rc == 0)
+        rc = atomic_commit("image", tmp, path, err, err_len);
+    else
+        remove(tmp);
     free(tmp);
     return rc;
 }
@@ -407,7 +389,7 @@ int image_write_particles(const char *path, const image_frame *f, int pixels_wid
                           size_t err_len)
 {
     if (!path || !f) {
-        set_err(err, err_len, "image: no path or frame");
+        io_error(err, err_len, "image: no path or frame");
         return -1;
     }
     image_layout l;
@@ -415,7 +397,7 @@ int image_write_particles(const char *path, const image_frame *f, int pixels_wid
     if (check_particles(f, err, err_len) != 0) return -1;
     canvas c = {malloc((size_t)l.width * (size_t)l.height * 3), l.width, l.height};
     if (!c.rgb) {
-        set_err(err, err_len, "image: out of memory for %d x %d px", l.width, l.height);
+        io_error(err, err_len, "image: out of memory for %d x %d px", l.width, l.height);
         return -1;
     }
     memset(c.rgb, 0xff, (size_t)l.width * (size_t)l.height * 3); /* a white background */

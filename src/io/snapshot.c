@@ -1,10 +1,12 @@
 /* snapshot: particle fields to HDF5 files (design §5) and the XDMF index ParaView opens. */
 #include "io/snapshot.h"
+#include "io/atomic_file.h"
+#include "io/hdf5_attr.h"
 #include "io/hdf5_errors.h"
+#include "io/io_error.h"
 
 #include <errno.h>
 #include <hdf5.h>
-#include <stdarg.h>
 #include <stdbool.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -14,20 +16,6 @@
 /* Vector fields are interleaved through a buffer of at most this many rows (192 KiB for
  * 3 doubles), so a snapshot never needs a second copy of a whole n x dim array. */
 enum { INTERLEAVE_ROWS = 8192 };
-
-static const char temp_suffix[] = ".tmp";
-
-/* ---------------------------------------------------------------------------------------- */
-/* Errors                                                                                    */
-
-static void set_err(char *err, size_t err_len, const char *fmt, ...)
-{
-    if (!err || err_len == 0) return;
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(err, err_len, fmt, ap);
-    va_end(ap);
-}
 
 /* Where a failure of snapshot_write is reported: the caller's buffer, plus what HDF5 said
  * about the first failed call (caught when it happens: every later HDF5 call, even the
@@ -42,9 +30,9 @@ typedef struct {
 static void fail_hdf5(const report *r, const char *what, const char *name)
 {
     if (r->hdf5.detail[0])
-        set_err(r->err, r->err_len, "snapshot: %s '%s': %s", what, name, r->hdf5.detail);
+        io_error(r->err, r->err_len, "snapshot: %s '%s': %s", what, name, r->hdf5.detail);
     else
-        set_err(r->err, r->err_len, "snapshot: %s '%s'", what, name);
+        io_error(r->err, r->err_len, "snapshot: %s '%s'", what, name);
 }
 
 /* ---------------------------------------------------------------------------------------- */
@@ -87,24 +75,24 @@ static int check_fields(size_t n, const snapshot_field *fields, int n_fields, ch
                         size_t err_len)
 {
     if (n_fields < 0 || (n_fields > 0 && !fields)) {
-        set_err(err, err_len, "snapshot: bad field list (%d fields)", n_fields);
+        io_error(err, err_len, "snapshot: bad field list (%d fields)", n_fields);
         return -1;
     }
     for (int i = 0; i < n_fields; ++i) {
         const snapshot_field *f = &fields[i];
         if (!f->name || !f->name[0] || strchr(f->name, '/') ||
             strcmp(f->name, SNAPSHOT_VERTICES_DATASET) == 0) {
-            set_err(err, err_len, "snapshot: field %d has no usable name", i);
+            io_error(err, err_len, "snapshot: field %d has no usable name", i);
             return -1;
         }
         if (!field_type_valid(f->type) || f->ncomp < 1 || f->ncomp > 3) {
-            set_err(err, err_len, "snapshot: field '%s' has a bad type or %d components", f->name,
-                    f->ncomp);
+            io_error(err, err_len, "snapshot: field '%s' has a bad type or %d components", f->name,
+                     f->ncomp);
             return -1;
         }
         for (int c = 0; c < f->ncomp && n > 0; ++c) {
             if (!f->component[c]) {
-                set_err(err, err_len, "snapshot: field '%s' component %d is NULL", f->name, c);
+                io_error(err, err_len, "snapshot: field '%s' component %d is NULL", f->name, c);
                 return -1;
             }
         }
@@ -113,66 +101,7 @@ static int check_fields(size_t n, const snapshot_field *fields, int n_fields, ch
 }
 
 /* ---------------------------------------------------------------------------------------- */
-/* Atomic replacement                                                                        */
-
-static char *temp_path_for(const char *path)
-{
-    size_t len = strlen(path);
-    char *tmp = malloc(len + sizeof temp_suffix);
-    if (tmp) {
-        memcpy(tmp, path, len);
-        memcpy(tmp + len, temp_suffix, sizeof temp_suffix);
-    }
-    return tmp;
-}
-
-/* rename() replaces the target in one step (POSIX), so a reader sees either the previous
- * complete file or the new complete one, never a half-written file. */
-static int commit_temp(const char *module, const char *tmp, const char *path, char *err,
-                       size_t err_len)
-{
-    if (rename(tmp, path) != 0) {
-        set_err(err, err_len, "%s: cannot rename '%s' to '%s': %s", module, tmp, path,
-                strerror(errno));
-        remove(tmp);
-        return -1;
-    }
-    return 0;
-}
-
-/* ---------------------------------------------------------------------------------------- */
 /* HDF5 snapshot                                                                             */
-
-static int write_scalar_attr(hid_t loc, const char *name, hid_t file_type, hid_t mem_type,
-                             const void *value)
-{
-    hid_t space = H5Screate(H5S_SCALAR);
-    if (space < 0) return -1;
-    hid_t attr = H5Acreate2(loc, name, file_type, space, H5P_DEFAULT, H5P_DEFAULT);
-    int rc = -1;
-    if (attr >= 0) {
-        rc = H5Awrite(attr, mem_type, value) < 0 ? -1 : 0;
-        if (H5Aclose(attr) < 0) rc = -1;
-    }
-    H5Sclose(space);
-    return rc;
-}
-
-/* Fixed-length, NUL-terminated ASCII: the simplest string type to read back from C, and
- * h5py/ParaView read it as a plain str. The size includes the terminator, so an empty text
- * still gives a valid (size 1) type. */
-static int write_string_attr(hid_t loc, const char *name, const char *text)
-{
-    if (!text) text = "";
-    hid_t type = H5Tcopy(H5T_C_S1);
-    if (type < 0) return -1;
-    int rc = -1;
-    if (H5Tset_size(type, strlen(text) + 1) >= 0 && H5Tset_strpad(type, H5T_STR_NULLTERM) >= 0 &&
-        H5Tset_cset(type, H5T_CSET_ASCII) >= 0)
-        rc = write_scalar_attr(loc, name, type, type, text);
-    H5Tclose(type);
-    return rc;
-}
 
 static int write_attrs(hid_t file, const snapshot_attrs *a, const report *r)
 {
@@ -191,13 +120,13 @@ static int write_attrs(hid_t file, const snapshot_attrs *a, const report *r)
         {"h", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &a->h},
     };
     for (size_t i = 0; i < sizeof scalars / sizeof scalars[0]; ++i) {
-        if (write_scalar_attr(file, scalars[i].name, scalars[i].file_type, scalars[i].mem_type,
-                              scalars[i].value) < 0) {
+        if (hdf5_attr_write_scalar(file, scalars[i].name, scalars[i].file_type, scalars[i].mem_type,
+                                   scalars[i].value) < 0) {
             fail_hdf5(r, "cannot write attribute", scalars[i].name);
             return -1;
         }
     }
-    if (write_string_attr(file, "case", a->case_text) < 0) {
+    if (hdf5_attr_write_string(file, "case", a->case_text) < 0) {
         fail_hdf5(r, "cannot write attribute", "case");
         return -1;
     }
@@ -370,20 +299,20 @@ static int write_h5_file(const char *path, const char *tmp, size_t n, const snap
         remove(tmp);
         return -1;
     }
-    return commit_temp("snapshot", tmp, path, r->err, r->err_len);
+    return atomic_commit("snapshot", tmp, path, r->err, r->err_len);
 }
 
 int snapshot_write(const char *path, size_t n, const snapshot_field *fields, int n_fields,
                    const snapshot_attrs *attrs, char *err, size_t err_len)
 {
     if (!path || !path[0] || !attrs) {
-        set_err(err, err_len, "snapshot: no path or attributes given");
+        io_error(err, err_len, "snapshot: no path or attributes given");
         return -1;
     }
     if (check_fields(n, fields, n_fields, err, err_len) < 0) return -1;
-    char *tmp = temp_path_for(path);
+    char *tmp = atomic_temp_path(path);
     if (!tmp) {
-        set_err(err, err_len, "snapshot: out of memory");
+        io_error(err, err_len, "snapshot: out of memory");
         return -1;
     }
     report r = {.err = err, .err_len = err_len};
@@ -495,16 +424,16 @@ static int check_xdmf_args(const char *xmf_path, int n_snapshots, const char *co
 {
     if (!xmf_path || !xmf_path[0] || n_snapshots < 0 ||
         (n_snapshots > 0 && (!files || !times || !counts))) {
-        set_err(err, err_len, "xdmf: bad arguments");
+        io_error(err, err_len, "xdmf: bad arguments");
         return -1;
     }
     if (dim != 2 && dim != 3) {
-        set_err(err, err_len, "xdmf: dimension %d is not 2 or 3", dim);
+        io_error(err, err_len, "xdmf: dimension %d is not 2 or 3", dim);
         return -1;
     }
     for (int k = 0; k < n_snapshots; ++k) {
         if (!files[k] || !files[k][0]) {
-            set_err(err, err_len, "xdmf: snapshot %d has no file name", k);
+            io_error(err, err_len, "xdmf: snapshot %d has no file name", k);
             return -1;
         }
     }
@@ -520,27 +449,27 @@ int snapshot_write_xdmf(const char *xmf_path, int n_snapshots, const char *const
         return -1;
     const snapshot_field *position = find_position(fields, n_fields, dim);
     if (!position) {
-        set_err(err, err_len, "xdmf: no 'position' field with %d components", dim);
+        io_error(err, err_len, "xdmf: no 'position' field with %d components", dim);
         return -1;
     }
-    char *tmp = temp_path_for(xmf_path);
+    char *tmp = atomic_temp_path(xmf_path);
     if (!tmp) {
-        set_err(err, err_len, "xdmf: out of memory");
+        io_error(err, err_len, "xdmf: out of memory");
         return -1;
     }
     int rc = -1;
     FILE *out = fopen(tmp, "w");
     if (!out) {
-        set_err(err, err_len, "xdmf: cannot create '%s': %s", tmp, strerror(errno));
+        io_error(err, err_len, "xdmf: cannot create '%s': %s", tmp, strerror(errno));
     } else {
         xdmf_document(out, n_snapshots, files, times, counts, fields, n_fields, position, dim);
         /* ferror catches a failed write anywhere above; fclose catches a failed flush. */
         bool failed = ferror(out) != 0;
         if (fclose(out) != 0 || failed) {
-            set_err(err, err_len, "xdmf: cannot write '%s'", tmp);
+            io_error(err, err_len, "xdmf: cannot write '%s'", tmp);
             remove(tmp);
         } else {
-            rc = commit_temp("xdmf", tmp, xmf_path, err, err_len);
+            rc = atomic_commit("xdmf", tmp, xmf_path, err, err_len);
         }
     }
     free(tmp);

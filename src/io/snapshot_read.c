@@ -1,37 +1,10 @@
 /* snapshot_read: HDF5 reading of our own snapshot layout (design §5). */
 #include "io/snapshot_read.h"
+#include "io/hdf5_attr.h"
 
 #include <hdf5.h>
 #include <stdio.h>
 #include <stdlib.h>
-
-static int read_scalar_attr(hid_t file, const char *name, hid_t type, void *out)
-{
-    hid_t a = H5Aopen(file, name, H5P_DEFAULT);
-    if (a < 0) return -1;
-    int rc = H5Aread(a, type, out) < 0 ? -1 : 0;
-    H5Aclose(a);
-    return rc;
-}
-
-static char *read_string_attr(hid_t file, const char *name)
-{
-    hid_t a = H5Aopen(file, name, H5P_DEFAULT);
-    if (a < 0) return NULL;
-    hid_t type = H5Aget_type(a);
-    char *text = NULL;
-    if (H5Tget_class(type) == H5T_STRING && !H5Tis_variable_str(type)) {
-        size_t size = H5Tget_size(type);
-        text = calloc(size + 1, 1);
-        if (text && H5Aread(a, type, text) < 0) {
-            free(text);
-            text = NULL;
-        }
-    }
-    H5Tclose(type);
-    H5Aclose(a);
-    return text;
-}
 
 int snapshot_read_info(const char *path, snapshot_info *info, char *err, size_t err_len)
 {
@@ -55,10 +28,10 @@ int snapshot_read_info(const char *path, snapshot_info *info, char *err, size_t 
         H5Sclose(space);
         H5Dclose(d);
     }
-    if (rc == 0 && (read_scalar_attr(file, "time", H5T_NATIVE_DOUBLE, &info->time) ||
-                    read_scalar_attr(file, "step", H5T_NATIVE_LONG, &info->step) ||
-                    read_scalar_attr(file, "dim", H5T_NATIVE_INT, &info->dim) ||
-                    !(info->case_text = read_string_attr(file, "case"))))
+    if (rc == 0 && (hdf5_attr_read_scalar(file, "time", H5T_NATIVE_DOUBLE, &info->time) ||
+                    hdf5_attr_read_scalar(file, "step", H5T_NATIVE_LONG, &info->step) ||
+                    hdf5_attr_read_scalar(file, "dim", H5T_NATIVE_INT, &info->dim) ||
+                    !(info->case_text = hdf5_attr_read_string(file, "case"))))
         rc = -1;
     H5Fclose(file);
     if (rc)
