@@ -284,18 +284,18 @@ static int write_image(run *r)
     }
     char title[CONFIG_NAME_MAX + 32], name[64], path[CONFIG_PATH_MAX + 96], err[512];
     snprintf(title, sizeof title, "%s%s", r->cfg->name, DIM == 3 ? " (mid-width)" : "");
-    image_frame f = {x,
-                     y,
-                     value,
-                     kept,
-                     0.5 * s->dv.dr,
-                     s->tank.size[0],
-                     s->tank.size[1],
-                     -IMAGE_EPS_RANGE,
-                     IMAGE_EPS_RANGE,
-                     "eps_Vi",
-                     title,
-                     s->t};
+    image_frame f = {.x = x,
+                     .y = y,
+                     .value = value,
+                     .n = kept,
+                     .radius = 0.5 * s->dv.dr,
+                     .width = s->tank.size[0],
+                     .height = s->tank.size[1],
+                     .vmin = -IMAGE_EPS_RANGE,
+                     .vmax = IMAGE_EPS_RANGE,
+                     .label = "eps_Vi",
+                     .title = title,
+                     .time = s->t};
     snprintf(name, sizeof name, "images/particles_%06d.png", r->n_images);
     out_path(r, path, sizeof path, name);
     int status = image_write_particles(path, &f, IMAGE_PIXELS, err, sizeof err);
@@ -402,12 +402,19 @@ static void close_run(run *r)
     log_close();
 }
 
+/* The first multiple of `every` after t. A time that landed on k every (a period end, the
+ * end of the run) holds it exactly; the 1e-9 keeps t / every's rounding from taking k again. */
+static double next_multiple(double t, double every)
+{
+    return (floor(t / every + 1e-9) + 1.0) * every;
+}
+
 /* Whether an output with interval `every` (0: every step) is due at t; moves *next on. */
 static int output_due(double t, double every, double *next, int last)
 {
     if (every <= 0.0) return 1;
     if (t < *next && !last) return 0;
-    *next = (floor(t / every + 1e-9) + 1.0) * every;
+    *next = next_multiple(t, every);
     return 1;
 }
 
@@ -415,13 +422,12 @@ static int output_due(double t, double every, double *next, int last)
 static double period_end(const run *r) { return (double)r->period * r->cfg->period; }
 
 /* The time the next step may not pass: t_end, or the first period end after t, on which the
- * step lands so that each period's dissipation is measured at its exact ends. (A step that
- * landed on kT holds t = kT exactly; the 1e-9 keeps t/T's rounding from taking kT again.) */
+ * step lands so that each period's dissipation is measured at its exact ends. */
 static double step_stop(const run *r)
 {
-    double t_end = r->cfg->t_end, period = r->cfg->period;
+    double t_end = r->cfg->t_end;
     if (!has_periods(r)) return t_end;
-    double next = (floor(r->s.t / period + 1e-9) + 1.0) * period;
+    double next = next_multiple(r->s.t, r->cfg->period);
     return next < t_end ? next : t_end;
 }
 

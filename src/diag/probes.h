@@ -3,8 +3,6 @@
 #ifndef VCSPH_PROBES_H
 #define VCSPH_PROBES_H
 
-#include "boundary/tank.h"
-#include "core/config.h"
 #include "core/kernel.h"
 #include "core/particles.h"
 
