@@ -41,4 +41,42 @@ static inline int temp_dir_remove(const char *dir)
     return nftw(dir, temp_dir_remove_entry, 16, FTW_DEPTH | FTW_PHYS);
 }
 
+/* A test's temporary folder for cmocka's setup and teardown, with a scratch buffer for the
+ * paths in it; `row` keeps what a table-driven test had in *state. */
+typedef struct {
+    char dir[256];
+    char path[512]; /* scratch for temp_fixture_path */
+    const void *row;
+} temp_fixture;
+
+/* Replaces *state by a new fixture whose folder is named after prefix. Returns 0 or -1. */
+static inline int temp_fixture_setup(void **state, const char *prefix)
+{
+    temp_fixture *fx = calloc(1, sizeof *fx);
+    if (!fx) return -1;
+    fx->row = *state;
+    if (temp_dir_make(fx->dir, sizeof fx->dir, prefix) != 0) {
+        free(fx);
+        return -1;
+    }
+    *state = fx;
+    return 0;
+}
+
+/* Removes the fixture's folder with everything in it, and the fixture. */
+static inline int temp_fixture_teardown(void **state)
+{
+    temp_fixture *fx = *state;
+    int rc = temp_dir_remove(fx->dir);
+    free(fx);
+    return rc;
+}
+
+/* dir/name, in the fixture's scratch buffer (valid until the next call). */
+static inline const char *temp_fixture_path(temp_fixture *fx, const char *name)
+{
+    snprintf(fx->path, sizeof fx->path, "%s/%s", fx->dir, name);
+    return fx->path;
+}
+
 #endif

@@ -26,40 +26,17 @@
 #include "check.h"
 #include "table.h"
 #include "temp_dir.h"
-
-#ifndef VCSPH_BINARY
-#error "VCSPH_BINARY must name the vcsph executable (CMake defines it)"
-#endif
+#include "vcsph_child.h"
 
 extern char **environ;
 
 /* ---- fixture: one temporary folder per test, the child's working directory ----------------- */
 
-typedef struct {
-    char dir[256];
-    const void *row; /* the bad-input case of a table-driven test */
-} fixture;
+typedef temp_fixture fixture;
 
-static int setup(void **state)
-{
-    fixture *fx = calloc(1, sizeof *fx);
-    if (!fx) return -1;
-    fx->row = *state;
-    if (temp_dir_make(fx->dir, sizeof fx->dir, "vcsph-cli") != 0) {
-        free(fx);
-        return -1;
-    }
-    *state = fx;
-    return 0;
-}
+static int setup(void **state) { return temp_fixture_setup(state, "vcsph-cli"); }
 
-static int teardown(void **state)
-{
-    fixture *fx = *state;
-    int rc = temp_dir_remove(fx->dir);
-    free(fx);
-    return rc;
-}
+static int teardown(void **state) { return temp_fixture_teardown(state); }
 
 /* ---- helpers -------------------------------------------------------------------------------- */
 
@@ -72,10 +49,7 @@ static void write_file(const fixture *fx, const char *name, const char *text)
 {
     char path[512];
     path_in(fx, name, path, sizeof path);
-    FILE *f = fopen(path, "w");
-    assert_non_null(f);
-    assert_true(fputs(text, f) != EOF);
-    assert_int_equal(fclose(f), 0);
+    text_file_write(path, text);
 }
 
 /* The whole file as a string (empty if it cannot be read); free() it. */
@@ -83,19 +57,7 @@ static char *read_file(const fixture *fx, const char *name)
 {
     char path[512];
     path_in(fx, name, path, sizeof path);
-    FILE *f = fopen(path, "r");
-    char *text = NULL;
-    size_t len = 0;
-    FILE *mem = open_memstream(&text, &len);
-    assert_non_null(mem);
-    if (f) {
-        char buf[4096];
-        size_t n;
-        while ((n = fread(buf, 1, sizeof buf, f)) > 0) fwrite(buf, 1, n, mem);
-        fclose(f);
-    }
-    fclose(mem);
-    return text;
+    return text_file_read(path);
 }
 
 static bool is_regular_file(const fixture *fx, const char *name)
@@ -114,46 +76,10 @@ static bool exists(const fixture *fx, const char *name)
     return lstat(path, &st) == 0;
 }
 
-/* Runs vcsph with argv[1..] (NULL-terminated) in the fixture's folder, stdout and stderr into
- * stdout.txt and stderr.txt there. Returns the exit status, or -1 when a signal killed it. */
+/* Runs vcsph with argv[1..] (NULL-terminated) in the fixture's folder (vcsph_child.h). */
 static int run_vcsph(const fixture *fx, const char *const *args)
 {
-    const char *argv[32] = {VCSPH_BINARY};
-    int argc = 1;
-    for (; args[argc - 1]; argc++) {
-        assert_true(argc < 31);
-        argv[argc] = args[argc - 1];
-    }
-    argv[argc] = NULL;
-    fflush(NULL);
-    pid_t pid = fork();
-    assert_true(pid >= 0);
-    if (pid == 0) {
-        /* the child: only async-signal-safe calls until execv */
-        if (chdir(fx->dir)) _exit(126);
-        int out = open("stdout.txt", O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        int err = open("stderr.txt", O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        if (out < 0 || err < 0 || dup2(out, 1) < 0 || dup2(err, 2) < 0) _exit(126);
-        close(out);
-        close(err);
-        execve(VCSPH_BINARY, (char *const *)argv, environ);
-        _exit(127);
-    }
-    int status;
-    while (waitpid(pid, &status, 0) < 0)
-        if (errno != EINTR) fail_msg("waitpid: %s", strerror(errno));
-    if (WIFSIGNALED(status)) {
-        print_error("vcsph died of signal %d\n", WTERMSIG(status));
-        return -1;
-    }
-    int rc = WEXITSTATUS(status);
-    assert_true(rc != 126 && rc != 127); /* the child could not start vcsph */
-    return rc;
-}
-
-static void assert_contains(const char *text, const char *part)
-{
-    if (!strstr(text, part)) fail_msg("expected \"%s\" in:\n%s", part, text);
+    return vcsph_child_run(fx->dir, args, environ);
 }
 
 /* The line after `line`, NULL at the end of the text. */
@@ -161,13 +87,6 @@ static const char *next_line(const char *line)
 {
     const char *nl = strchr(line, '\n');
     return nl && nl[1] ? nl + 1 : NULL;
-}
-
-static int count_lines(const char *text)
-{
-    int n = 0;
-    for (const char *p = text; *p; p++) n += *p == '\n';
-    return n;
 }
 
 /* Fails unless the fixture's folder holds exactly the entries in `expected` (NULL-ended):

@@ -21,34 +21,15 @@
 
 #include "png_read.h"
 #include "temp_dir.h"
-
-#ifndef VCSPH_BINARY
-#error "VCSPH_BINARY must name the vcsph executable (CMake defines it)"
-#endif
+#include "vcsph_child.h"
 
 extern char **environ;
 
 /* ---- fixture: one temporary folder per test ------------------------------------------------- */
 
-static int setup(void **state)
-{
-    char *dir = malloc(256);
-    if (!dir) return -1;
-    if (temp_dir_make(dir, 256, "vcsph-plot") != 0) {
-        free(dir);
-        return -1;
-    }
-    *state = dir;
-    return 0;
-}
+static int setup(void **state) { return temp_fixture_setup(state, "vcsph-plot"); }
 
-static int teardown(void **state)
-{
-    char *dir = *state;
-    int rc = temp_dir_remove(dir);
-    free(dir);
-    return rc;
-}
+static int teardown(void **state) { return temp_fixture_teardown(state); }
 
 /* ---- helpers -------------------------------------------------------------------------------- */
 
@@ -61,28 +42,15 @@ static void write_file(const char *dir, const char *name, const char *text)
 {
     char path[1024];
     path_in(dir, name, path, sizeof path);
-    FILE *f = fopen(path, "w");
-    assert_non_null(f);
-    assert_true(fputs(text, f) != EOF);
-    assert_int_equal(fclose(f), 0);
+    text_file_write(path, text);
 }
 
 /* The whole file as a string (empty if it cannot be read); free() it. */
 static char *read_text(const char *dir, const char *name)
 {
-    char path[1024], *text = NULL;
-    size_t len = 0;
+    char path[1024];
     path_in(dir, name, path, sizeof path);
-    FILE *mem = open_memstream(&text, &len), *f = fopen(path, "r");
-    assert_non_null(mem);
-    if (f) {
-        char buf[4096];
-        size_t n;
-        while ((n = fread(buf, 1, sizeof buf, f)) > 0) fwrite(buf, 1, n, mem);
-        fclose(f);
-    }
-    fclose(mem);
-    return text;
+    return text_file_read(path);
 }
 
 static bool exists(const char *dir, const char *name)
@@ -100,18 +68,10 @@ static void make_dir(const char *dir, const char *name)
     assert_int_equal(mkdir(path, 0777), 0);
 }
 
-/* Runs vcsph with args (NULL-ended) in `dir`, stdout and stderr into stdout.txt and stderr.txt
- * there; with `path` non-NULL, PATH is that in the child's environment. Returns the exit
- * status, or -1 when a signal killed it. */
+/* Runs vcsph with args (NULL-ended) in `dir` (vcsph_child.h); with `path` non-NULL, PATH is
+ * that in the child's environment. */
 static int run_vcsph(const char *dir, const char *const *args, const char *path)
 {
-    const char *argv[16] = {VCSPH_BINARY};
-    int argc = 1;
-    for (; args[argc - 1]; argc++) {
-        assert_true(argc < 15);
-        argv[argc] = args[argc - 1];
-    }
-    argv[argc] = NULL;
     /* the environment, PATH replaced when asked */
     int n_env = 0;
     while (environ[n_env]) n_env++;
@@ -124,43 +84,9 @@ static int run_vcsph(const char *dir, const char *const *args, const char *path)
         snprintf(path_var, sizeof path_var, "PATH=%s", path);
         envp[k++] = path_var;
     }
-    fflush(NULL);
-    pid_t pid = fork();
-    assert_true(pid >= 0);
-    if (pid == 0) {
-        /* the child: only async-signal-safe calls until execve */
-        if (chdir(dir)) _exit(126);
-        int out = open("stdout.txt", O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        int err = open("stderr.txt", O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        if (out < 0 || err < 0 || dup2(out, 1) < 0 || dup2(err, 2) < 0) _exit(126);
-        close(out);
-        close(err);
-        execve(VCSPH_BINARY, (char *const *)argv, envp);
-        _exit(127);
-    }
+    int rc = vcsph_child_run(dir, args, envp);
     free(envp);
-    int status;
-    while (waitpid(pid, &status, 0) < 0)
-        if (errno != EINTR) fail_msg("waitpid: %s", strerror(errno));
-    if (WIFSIGNALED(status)) {
-        print_error("vcsph died of signal %d\n", WTERMSIG(status));
-        return -1;
-    }
-    int rc = WEXITSTATUS(status);
-    assert_true(rc != 126 && rc != 127); /* the child could not start vcsph */
     return rc;
-}
-
-static void assert_contains(const char *text, const char *part)
-{
-    if (!strstr(text, part)) fail_msg("expected \"%s\" in:\n%s", part, text);
-}
-
-static int count_lines(const char *text)
-{
-    int n = 0;
-    for (const char *p = text; *p; p++) n += *p == '\n';
-    return n;
 }
 
 static bool gnuplot_installed(void)
@@ -263,7 +189,7 @@ static const char tiny_sway[] = "[case]\n"
 
 static void test_plot_real_run(void **state)
 {
-    const char *dir = *state;
+    const char *dir = ((temp_fixture *)*state)->dir;
     if (!gnuplot_installed()) skip();
     write_file(dir, "tiny.ini", tiny_sway);
     int rc = run_vcsph(dir, (const char *const[]){"run", "tiny.ini", "-o", "run", "--quiet", NULL},
@@ -348,7 +274,7 @@ static const char *const every_plot[] = {
  * refers to its data by relative paths, so no name reaches gnuplot but in a title). */
 static void test_plot_every_file_without_case(void **state)
 {
-    const char *dir = *state;
+    const char *dir = ((temp_fixture *)*state)->dir;
     if (!gnuplot_installed()) skip();
     const char *name = "it's a \"run\"";
     write_run(dir, name, true);
@@ -373,7 +299,7 @@ static void test_plot_every_file_without_case(void **state)
  * exist (plots do not need the motion); no events, a probes.csv with a header only. */
 static void test_plot_with_case(void **state)
 {
-    const char *dir = *state;
+    const char *dir = ((temp_fixture *)*state)->dir;
     if (!gnuplot_installed()) skip();
     write_run(dir, "run", false);
     char run[1024];
@@ -415,7 +341,7 @@ static void assert_plot_fails(const char *dir, const char *const *args, int stat
 
 static void test_plot_bad_input(void **state)
 {
-    const char *dir = *state;
+    const char *dir = ((temp_fixture *)*state)->dir;
     assert_plot_fails(dir, (const char *const[]){"plot", "/nonexistent", NULL}, 2, "/nonexistent");
     assert_plot_fails(dir, (const char *const[]){"plot", NULL}, 2, "OUTDIR");
     assert_plot_fails(dir, (const char *const[]){"plot", "a", "b", NULL}, 2, "OUTDIR");
@@ -436,7 +362,7 @@ static void test_plot_bad_input(void **state)
  * run where gnuplot is. Needs no gnuplot itself. */
 static void test_plot_without_gnuplot(void **state)
 {
-    const char *dir = *state;
+    const char *dir = ((temp_fixture *)*state)->dir;
     write_run(dir, "run", true);
     int rc = run_vcsph(dir, (const char *const[]){"plot", "run", NULL}, "/nonexistent-bin");
     char *err = read_text(dir, "stderr.txt");

@@ -34,10 +34,7 @@
 #include <unistd.h>
 
 #include "temp_dir.h"
-
-#ifndef VCSPH_BINARY
-#error "VCSPH_BINARY must name the vcsph executable (CMake defines it)"
-#endif
+#include "vcsph_child.h"
 
 extern char **environ;
 
@@ -439,13 +436,6 @@ static char *folder_listing(const char *dir)
     assert_int_equal(nftw(path, list_entry, 16, FTW_PHYS), 0);
     fclose(listing);
     return text;
-}
-
-static int count_lines(const char *text)
-{
-    int n = 0;
-    for (; *text; text++) n += *text == '\n';
-    return n;
 }
 
 /* vcsph run --restart with extra args exits 2 with one line naming `expect`, and the output

@@ -30,36 +30,13 @@
 /* ---------------------------------------------------------------------------------------- */
 /* Fixture: a fresh directory under $TMPDIR (else /tmp) per test, removed afterwards          */
 
-typedef struct {
-    char dir[256];
-    char path[512]; /* scratch for path_in */
-} fixture;
+typedef temp_fixture fixture;
 
-static int setup(void **state)
-{
-    fixture *fx = calloc(1, sizeof *fx);
-    if (!fx) return -1;
-    if (temp_dir_make(fx->dir, sizeof fx->dir, "vcsph-snapshot") != 0) {
-        free(fx);
-        return -1;
-    }
-    *state = fx;
-    return 0;
-}
+static int setup(void **state) { return temp_fixture_setup(state, "vcsph-snapshot"); }
 
-static int teardown(void **state)
-{
-    fixture *fx = *state;
-    int rc = temp_dir_remove(fx->dir);
-    free(fx);
-    return rc;
-}
+static int teardown(void **state) { return temp_fixture_teardown(state); }
 
-static const char *path_in(fixture *fx, const char *name)
-{
-    snprintf(fx->path, sizeof fx->path, "%s/%s", fx->dir, name);
-    return fx->path;
-}
+static const char *path_in(fixture *fx, const char *name) { return temp_fixture_path(fx, name); }
 
 static bool exists(const char *path) { return access(path, F_OK) == 0; }
 
