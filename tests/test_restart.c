@@ -23,6 +23,7 @@
 #include <fcntl.h>
 #include <ftw.h>
 #include <hdf5.h>
+#include <math.h>
 #include <signal.h>
 #include <stdbool.h>
 #include <stdio.h>
@@ -33,6 +34,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "io/checkpoint.h"
 #include "temp_dir.h"
 #include "vcsph_child.h"
 
@@ -493,19 +495,6 @@ static long long values_offset(const char *path, const char *file, size_t len, c
     return at + (long long)(size / 2); /* the middle of the values */
 }
 
-/* The checkpoint's header hash made to match the contents again (io/checkpoint.c: FNV-1a of
- * the whole file with the 16 hash digits read as '0'), as a forger would. */
-static void reseal(char *file, size_t len)
-{
-    char *digits = strstr(file, "fnv1a64 ");
-    assert_true(digits && digits - file < 512);
-    digits += 8;
-    memset(digits, '0', 16);
-    char hex[17];
-    snprintf(hex, sizeof hex, "%016llx", (unsigned long long)hash_bytes(file, len));
-    memcpy(digits, hex, 16);
-}
-
 static void write_flipped(const char *good, size_t len, long long at, bool resealed,
                           const char *dest)
 {
@@ -513,9 +502,12 @@ static void write_flipped(const char *good, size_t len, long long at, bool resea
     assert_non_null(bad);
     memcpy(bad, good, len);
     bad[at] ^= 0x01;
-    if (resealed) reseal(bad, len);
     write_in_group(dest, bad, len);
     free(bad);
+    /* the header's hash made to match the contents again, as a forger would */
+    char path[600];
+    path_in(dest, path, sizeof path);
+    if (resealed) assert_int_equal(checkpoint_seal(path), 0);
 }
 
 /* An output folder as a kill -9 leaves it: rows, snapshots and images after the checkpoint,
@@ -525,15 +517,24 @@ static void make_killed_run(const char *dir)
     run_and_kill((const char *const[]){"run", "slosh.ini", "-o", dir, "--quiet", NULL}, dir, dir);
 }
 
+/* make_killed_run, and the bytes of the checkpoint it left (free() them). */
+static char *killed_run_checkpoint(const char *dir, size_t *len)
+{
+    make_killed_run(dir);
+    char path[600];
+    snprintf(path, sizeof path, "%s/%s/checkpoint.h5", group_dir, dir);
+    char *bytes = read_all(path, len);
+    assert_non_null(bytes);
+    return bytes;
+}
+
 static void test_damaged_checkpoints_are_refused(void **state)
 {
     (void)state;
-    make_killed_run("damaged");
+    size_t len;
+    char *good = killed_run_checkpoint("damaged", &len);
     char cp_path[600];
     path_in("damaged/checkpoint.h5", cp_path, sizeof cp_path);
-    size_t len;
-    char *good = read_all(cp_path, &len);
-    assert_non_null(good);
     write_in_group("good.h5", good, len);
     const char *const args[] = {"--restart", "damaged/checkpoint.h5", NULL};
 
@@ -548,6 +549,10 @@ static void test_damaged_checkpoints_are_refused(void **state)
     /* a byte of HDF5's metadata (the superblock after the header), and the last byte */
     write_flipped(good, len, 512 + 20, false, "damaged/checkpoint.h5");
     assert_refused("damaged", args, "damaged");
+    /* the same with the hash forged: HDF5's metadata checksum, and still one line (HDF5
+       cannot close such a file, and its exit hook would complain: hdf5_errors.h) */
+    write_flipped(good, len, 512 + 20, true, "damaged/checkpoint.h5");
+    assert_refused("damaged", args, "incorrect metadata checksum");
     write_flipped(good, len, (long long)len - 1, false, "damaged/checkpoint.h5");
     assert_refused("damaged", args, "damaged");
     write_in_group("damaged/checkpoint.h5", good, len / 2);
@@ -568,7 +573,9 @@ static void test_damaged_checkpoints_are_refused(void **state)
     /* another version of the format, as a later vcsph would write it (its header is text) */
     char *other = malloc(len);
     memcpy(other, good, len);
-    char *v = strstr(other, "version 1\n"); /* the header is text up to there */
+    char version_line[32];
+    snprintf(version_line, sizeof version_line, "version %d\n", CHECKPOINT_VERSION);
+    char *v = strstr(other, version_line); /* the header is text up to there */
     assert_true(v && v - other < 512);
     v[8] = '7';
     write_in_group("damaged/checkpoint.h5", other, len);
@@ -579,6 +586,137 @@ static void test_damaged_checkpoints_are_refused(void **state)
     write_in_group("damaged/checkpoint.h5", good, len);
     restart_and_compare("damaged", "damaged-restart");
     free(good);
+}
+
+/* ---- (e) forged states ------------------------------------------------------------------- */
+
+/* Value k of dataset `name` of the checkpoint `name_in_group` set to v (read and written as
+ * type `mem`, HDF5 recomputing the chunk's Fletcher32), and the header resealed: a file that
+ * passes every checksum, as another program could write it. */
+static void forge(const char *file, const char *name, hid_t mem, hsize_t k, const void *v)
+{
+    char path[600];
+    path_in(file, path, sizeof path);
+    hid_t f = H5Fopen(path, H5F_ACC_RDWR, H5P_DEFAULT);
+    hid_t d = H5Dopen2(f, name, H5P_DEFAULT);
+    assert_true(f >= 0 && d >= 0);
+    hid_t space = H5Dget_space(d), one = H5Screate_simple(1, (hsize_t[]){1}, NULL);
+    assert_true(H5Sselect_elements(space, H5S_SELECT_SET, 1, &k) >= 0);
+    assert_true(H5Dwrite(d, mem, one, space, H5P_DEFAULT, v) >= 0);
+    H5Sclose(one);
+    H5Sclose(space);
+    H5Dclose(d);
+    assert_true(H5Fclose(f) >= 0);
+    assert_int_equal(checkpoint_seal(path), 0);
+}
+
+/* A checkpoint with a valid hash and checksums whose state no run writes (a particle at NaN,
+ * a negative sample count of the eta control, which would index its history, a duplicated
+ * particle id, another eta control than the case's) is refused like a damaged one. */
+static void test_forged_states_are_refused(void **state)
+{
+    (void)state;
+    size_t len;
+    char *good = killed_run_checkpoint("forged", &len);
+    const char *const args[] = {"--restart", "forged/checkpoint.h5", NULL};
+    const double nan_value = NAN;
+    const int64_t minus_one = -1, zero = 0, other_kind = 0;
+    struct {
+        const char *dataset;
+        hid_t type;
+        hsize_t index;
+        const void *value;
+        const char *expect;
+    } forgeries[] = {
+        {"x_1", H5T_NATIVE_DOUBLE, 3, &nan_value, "fail the health check"},
+        {"eta_i64", H5T_NATIVE_INT64, 4, &minus_one, "negative count of the eta control"},
+        {"id", H5T_NATIVE_INT64, 1, &zero, "particle ids"},
+        {"eta_i64", H5T_NATIVE_INT64, 1, &other_kind, "another eta control"},
+    };
+    for (size_t k = 0; k < sizeof forgeries / sizeof forgeries[0]; k++) {
+        write_in_group("forged/checkpoint.h5", good, len);
+        forge("forged/checkpoint.h5", forgeries[k].dataset, forgeries[k].type, forgeries[k].index,
+              forgeries[k].value);
+        assert_refused("forged", args, forgeries[k].expect);
+    }
+    write_in_group("forged/checkpoint.h5", good, len);
+    restart_and_compare("forged", "forged-restart");
+    free(good);
+}
+
+/* ---- (f) a breakdown keeps the last good checkpoint --------------------------------------- */
+
+/* A heaving tank whose liquid passes density_bound = 2 % within a few steps (the heave's
+ * start and its extra effective gravity), with a checkpoint after every step. */
+static const char breakdown_case[] = "[case]\nname = heave\nt_end = 0.5\n"
+                                     "[tank]\nlength = 0.2\nheight = 0.1\n"
+                                     "[liquid]\nheight = 0.05\n"
+                                     "[motion]\ntype = heave\namplitude = 0.02\nperiod = 0.2\n"
+                                     "[numerics]\nresolution = 8\nsound_speed = 10\n"
+                                     "density_bound = 0.02\n"
+                                     "[output]\ntimeseries_every = 0\nsnapshot_every = 0.1\n"
+                                     "checkpoint_every = 1e-9\n";
+
+/* The first line of a run's stderr that holds "breakdown at", without its folder. */
+static char *breakdown_line(const char *log)
+{
+    char *err = read_in_group(log);
+    const char *at = strstr(err, "breakdown at");
+    if (!at) fail_msg("%s: no breakdown:\n%s", log, err);
+    char *line = strndup(at, strcspn(at, "\n"));
+    free(err);
+    return line;
+}
+
+static int64_t checkpoint_step(const char *name)
+{
+    char path[600], err[512];
+    path_in(name, path, sizeof path);
+    checkpoint_data cd;
+    if (checkpoint_read(path, &cd, err, sizeof err)) fail_msg("%s", err);
+    const checkpoint_array *a = checkpoint_find(&cd, "solver_i64", CHECKPOINT_I64, 4,
+                                                "dim,n_fluid,step,n_edbc", err, sizeof err);
+    if (!a) fail_msg("%s", err);
+    int64_t step = ((const int64_t *)a->data)[2];
+    checkpoint_data_free(&cd);
+    return step;
+}
+
+/* design §2 and issue 8: a breakdown exits 3 and leaves the checkpoint of the step before it,
+ * which continues into the same breakdown, and leaves it again. */
+static void test_breakdown_keeps_the_last_good_checkpoint(void **state)
+{
+    (void)state;
+    write_in_group("heave.ini", breakdown_case, strlen(breakdown_case));
+    int rc = run_vcsph((const char *const[]){"run", "heave.ini", "-o", "broken", "--quiet", NULL},
+                       "broken");
+    assert_int_equal(rc, 3);
+    char *first = breakdown_line("broken.err");
+    const char *at_step = strstr(first, "step ");
+    assert_non_null(at_step);
+    long step = strtol(at_step + 5, NULL, 10);
+    assert_true(step >= 3); /* good steps, each checkpointed, came before it */
+    assert_int_equal(checkpoint_step("broken/checkpoint.h5"), step - 1);
+
+    char path[600];
+    path_in("broken/checkpoint.h5", path, sizeof path);
+    size_t len;
+    char *saved = read_all(path, &len);
+    assert_non_null(saved);
+    rc = run_vcsph(
+        (const char *const[]){"run", "--restart", "broken/checkpoint.h5", "--quiet", NULL},
+        "broken-restart");
+    assert_int_equal(rc, 3);
+    char *again = breakdown_line("broken-restart.err");
+    assert_string_equal(first, again); /* the same time, step, particle and density */
+    size_t len_after;
+    char *after = read_all(path, &len_after);
+    assert_non_null(after);
+    assert_true(len_after == len && memcmp(saved, after, len) == 0);
+    free(first);
+    free(again);
+    free(saved);
+    free(after);
 }
 
 /* The size of timeseries.csv that a checkpoint recorded (its csv_sizes, app/restart.c). */
@@ -644,6 +782,8 @@ int main(void)
         cmocka_unit_test(test_kill9_then_restart_is_exact),
         cmocka_unit_test(test_damaged_checkpoints_are_refused),
         cmocka_unit_test(test_restart_changes_only_end_and_outputs),
+        cmocka_unit_test(test_forged_states_are_refused),
+        cmocka_unit_test(test_breakdown_keeps_the_last_good_checkpoint),
     };
     return cmocka_run_group_tests(tests, group_setup, group_teardown);
 }

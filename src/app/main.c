@@ -6,6 +6,7 @@
 #include "core/config.h"
 #include "core/derived.h"
 #include "io/checkpoint.h"
+#include "io/hdf5_errors.h"
 #include "io/snapshot_read.h"
 
 #include <stdio.h>
@@ -135,6 +136,7 @@ static int restart_run(const cli_args *args)
 
 int main(int argc, char **argv)
 {
+    hdf5_errors_quiet_exit();
     cli_args args;
     char err[2048];
     if (cli_parse(argc, argv, &args, err, sizeof err)) {

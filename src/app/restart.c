@@ -11,7 +11,7 @@
  * is its mode, in the case, and the controller's eta0_regime; n_edbc is recomputed by
  * solver_prepare and saved for the record); and the bookkeeping of the outputs.
  *
- * Layout (checkpoint.h, version 1): one dataset each, scalars grouped with their "columns":
+ * Layout (checkpoint.h, version 2): one dataset each, scalars grouped with their "columns":
  *   case              bytes  the resolved case text (what `vcsph run --restart` runs)
  *   solver_f64        f64    t, last_dt, max_acc, work_in, work_st
  *   solver_i64        i64    dim, n_fluid, step, n_edbc
@@ -32,9 +32,12 @@
  *   u_0 .. u_{DIM-1}  f64    n_fluid, velocities
  *   rho, m            f64    n_fluid */
 #include "app/run_state.h"
+#include "diag/health.h"
 
 #include <dirent.h>
 #include <errno.h>
+#include <math.h>
+#include <stdbool.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -52,7 +55,7 @@
 static const char *const x_names[3] = {"x_0", "x_1", "x_2"};
 static const char *const u_names[3] = {"u_0", "u_1", "u_2"};
 
-enum { MAX_ITEMS = 32 };
+enum { MAX_ITEMS = CHECKPOINT_MAX_ITEMS };
 
 typedef struct {
     checkpoint_item items[MAX_ITEMS];
@@ -207,6 +210,12 @@ static int load_eta_control(eta_controller *e, const checkpoint_data *cd, char *
         take(cd, "eta_i64", CHECKPOINT_I64, 5, ETA_I64, k, err, err_len) ||
         take(cd, "eta_samples", CHECKPOINT_F64, ETA_HISTORY, NULL, e->samples, err, err_len))
         return -1;
+    /* the kind of control and whether it switches follow from the case (eta_control_init,
+       called by solver_init): another value is no state of this case's run */
+    if ((k[0] != 0) != e->switching || k[1] != (int64_t)e->kind) {
+        snprintf(err, err_len, "dataset 'eta_i64' holds another eta control than the case's");
+        return -1;
+    }
     e->threshold = v[0];
     e->period = v[1];
     e->eta = v[2];
@@ -215,39 +224,46 @@ static int load_eta_control(eta_controller *e, const checkpoint_data *cd, char *
     e->integral = v[5];
     e->eps_mean = v[6];
     e->eps_expected = v[7];
-    e->switching = k[0] != 0;
-    e->kind = (eta_control_kind)k[1];
     e->eta0_regime = k[2] != 0;
     e->switches = k[3];
     e->n_samples = k[4];
     return 0;
 }
 
-/* The XDMF index: n names (each NUL-ended, one after the other), times and counts. */
+/* The XDMF index: n names (each NUL-ended, one after the other), times and counts. The
+ * arrays are found with n entries before anything is allocated for n. */
 static int load_snapshot_index(run *r, const checkpoint_data *cd, int n, char *err, size_t err_len)
 {
-    const checkpoint_array *names =
-        checkpoint_find(cd, "snapshot_files", CHECKPOINT_BYTES, SIZE_MAX, NULL, err, err_len);
-    if (!names || run_reserve_snapshots(r, n)) return -1;
-    int64_t *counts = malloc((n ? (size_t)n : 1) * sizeof *counts);
-    int rc = !counts ||
-             take(cd, "snapshot_times", CHECKPOINT_F64, (size_t)n, NULL, r->snapshot_times, err,
-                  err_len) ||
-             take(cd, "snapshot_counts", CHECKPOINT_I64, (size_t)n, NULL, counts, err, err_len);
+    const checkpoint_array *names = checkpoint_find(cd, "snapshot_files", CHECKPOINT_BYTES,
+                                                    SIZE_MAX, NULL, err, err_len),
+                           *times = checkpoint_find(cd, "snapshot_times", CHECKPOINT_F64, (size_t)n,
+                                                    NULL, err, err_len),
+                           *counts = checkpoint_find(cd, "snapshot_counts", CHECKPOINT_I64,
+                                                     (size_t)n, NULL, err, err_len);
+    if (!names || !times || !counts) return -1;
+    if (run_reserve_snapshots(r, n)) {
+        snprintf(err, err_len, "out of memory for the index of %d snapshots", n);
+        return -1;
+    }
+    const int64_t *count = counts->data;
     const char *at = names->data, *end = at ? at + names->n : NULL;
-    for (int k = 0; k < n && rc == 0; k++) {
+    for (int k = 0; k < n; k++) {
         const char *nul = at < end ? memchr(at, '\0', (size_t)(end - at)) : NULL;
-        if (!nul || nul == at || !(r->snapshot_files[k] = strdup(at))) {
-            snprintf(err, err_len, "dataset 'snapshot_files' does not hold %d names", n);
-            rc = -1;
-            break;
+        char expected[32];
+        snapshot_name(k, expected, sizeof expected);
+        if (!nul || strcmp(at, expected) || count[k] < 0 || !(r->snapshot_files[k] = strdup(at))) {
+            snprintf(err, err_len,
+                     "datasets 'snapshot_files' and 'snapshot_counts' do not hold the index of "
+                     "%d snapshots",
+                     n);
+            return -1;
         }
-        r->snapshot_counts[k] = (size_t)counts[k];
+        r->snapshot_times[k] = ((const double *)times->data)[k];
+        r->snapshot_counts[k] = (size_t)count[k];
         r->n_snapshots = k + 1; /* what close_run frees */
         at = nul + 1;
     }
-    free(counts);
-    return rc ? -1 : 0;
+    return 0;
 }
 
 static int load_outputs(run *r, const checkpoint_data *cd, char *err, size_t err_len)
@@ -276,11 +292,77 @@ static int load_outputs(run *r, const checkpoint_data *cd, char *err, size_t err
     return load_snapshot_index(r, cd, (int)k[1], err, err_len);
 }
 
+/* ---- the loaded state, checked ----------------------------------------------------------- */
+
+static bool all_finite(const double *v, size_t n)
+{
+    for (size_t k = 0; k < n; k++)
+        if (!isfinite(v[k])) return false;
+    return true;
+}
+
+/* The ids are 0 .. n-1 in some order (the lattice numbers them; a run only reorders them). */
+static bool ids_are_a_permutation(const particles *p)
+{
+    size_t n = p->n_fluid;
+    unsigned char *seen = calloc(n ? n : 1, 1);
+    bool ok = seen != NULL;
+    for (size_t i = 0; i < n && ok; i++) {
+        int64_t id = p->id[i];
+        ok = id >= 0 && (uint64_t)id < n && !seen[id];
+        if (ok) seen[id] = 1;
+    }
+    free(seen);
+    return ok;
+}
+
+/* What every checkpoint this vcsph writes satisfies: it is written only after a step that
+ * passed the health check (simulation.c), with counters that only grow from their start. A
+ * file that fails this passed the header's hash, so it was made on purpose or by another
+ * program; it is refused before the run indexes arrays or divides by what it holds. */
+static int check_state(const run *r, char *err, size_t err_len)
+{
+    const solver *s = &r->s;
+    const eta_controller *e = &s->eta_control;
+    const double scalars[] = {s->t,           s->last_dt,
+                              s->max_acc,     s->work_in,
+                              s->work_st,     e->threshold,
+                              e->period,      e->t_last,
+                              e->eps_last,    e->integral,
+                              r->energy0,     r->mass0,
+                              r->v0,          r->ediss_period_start,
+                              r->next_series, r->next_snapshot,
+                              r->next_image};
+    const char *why = NULL;
+    char health[512], failed[600];
+    if (!all_finite(scalars, sizeof scalars / sizeof scalars[0]) ||
+        !all_finite(e->samples, ETA_HISTORY) ||
+        !all_finite(r->snapshot_times, (size_t)r->n_snapshots))
+        why = "a time, energy or control value that is not finite";
+    else if (s->t < 0.0 || s->last_dt < 0.0 || s->step < 0 || s->n_edbc < 0 || r->period < 1 ||
+             r->mass0 <= 0.0 || r->v0 <= 0.0)
+        why = "a negative time, step or count, or no mass or volume";
+    else if (!(e->eta >= 0.0 && e->eta <= 1.0) || e->n_samples < 0 || e->switches < 0)
+        why = "an eta outside [0, 1] or a negative count of the eta control";
+    else if (!ids_are_a_permutation(&s->p))
+        why = "particle ids that are not 0 .. n-1";
+    else if (health_check(s, health, sizeof health)) {
+        snprintf(failed, sizeof failed, "particles that fail the health check (%s)", health);
+        why = failed;
+    }
+    for (int k = 0; k < RUN_N_CSV && !why; k++)
+        if (r->resume_sizes[k] < -1) why = "a negative size of an output file";
+    if (!why) return 0;
+    snprintf(err, err_len, "it holds a state that no run of its case writes: %s", why);
+    return -1;
+}
+
 int restart_load(run *r, const checkpoint_data *cd, char *err, size_t err_len)
 {
     solver *s = &r->s;
     if (load_particles(s, cd, err, err_len) || load_solver_scalars(s, cd, err, err_len) ||
-        load_eta_control(&s->eta_control, cd, err, err_len) || load_outputs(r, cd, err, err_len))
+        load_eta_control(&s->eta_control, cd, err, err_len) || load_outputs(r, cd, err, err_len) ||
+        check_state(r, err, err_len))
         return -1;
     if (s->t > r->cfg->t_end) {
         snprintf(err, err_len, "case.t_end = %g s is before the checkpoint's time, t = %.9g s",

@@ -12,6 +12,8 @@
 #include "scheme/solver.h"
 
 #include <stdbool.h>
+#include <stddef.h>
+#include <stdio.h>
 
 /* The CSV files of a run, in the order of the checkpoint's csv_sizes. */
 enum { RUN_CSV_TIMESERIES, RUN_CSV_EVENTS, RUN_CSV_DISSIPATION, RUN_CSV_PROBES, RUN_N_CSV };
@@ -57,6 +59,12 @@ static inline csv_file *run_csv(run *r, int k)
 {
     csv_file *files[RUN_N_CSV] = {&r->timeseries, &r->events, &r->dissipation, &r->probes_csv};
     return files[k];
+}
+
+/* The name of snapshot k in the output folder (the XDMF index lists these). */
+static inline void snapshot_name(int k, char *name, size_t size)
+{
+    snprintf(name, size, "snapshots/%06d.h5", k);
 }
 
 #define run_reserve_snapshots  DIM_NAME(run_reserve_snapshots)

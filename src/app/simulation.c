@@ -21,8 +21,9 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#define simulation_run_dim    DIM_NAME(simulation_run)
-#define simulation_resume_dim DIM_NAME(simulation_resume)
+#define simulation_run_dim              DIM_NAME(simulation_run)
+#define simulation_resume_dim           DIM_NAME(simulation_resume)
+#define simulation_check_checkpoint_dim DIM_NAME(simulation_check_checkpoint)
 
 static const char timeseries_header[] =
     "t,step,dt,n_fluid,eps_v1,eps_v2,eps_v3,eps_gm,eps_sph,mass_err,eta,edbc,n_edbc,"
@@ -229,7 +230,7 @@ static int write_snapshot(run *r)
     solver *s = &r->s;
     if (run_reserve_snapshots(r, r->n_snapshots + 1)) return -1;
     char name[64], path[CONFIG_PATH_MAX + 96], err[512];
-    snprintf(name, sizeof name, "snapshots/%06d.h5", r->n_snapshots);
+    snapshot_name(r->n_snapshots, name, sizeof name);
     out_path(r, path, sizeof path, name);
     snapshot_field fields[16];
     int n_fields = snapshot_fields(s, fields);
@@ -483,8 +484,8 @@ static int breakdown(run *r)
     event(r, "breakdown", msg);
     write_series_row(r, 0);
     if (write_snapshot(r) == 0)
-        log_error("vcsph: last state written to %s/snapshots/%06d.h5", r->opt->output_dir,
-                  r->n_snapshots - 1);
+        log_error("vcsph: last state written to %s/%s", r->opt->output_dir,
+                  r->snapshot_files[r->n_snapshots - 1]);
     return 1;
 }
 
@@ -605,28 +606,48 @@ static void log_start(const run *r)
     log_info("vcsph: output in %s", r->opt->output_dir);
 }
 
+/* The solver of cfg, and the state of checkpoint cd loaded into it unless cd is NULL. Touches
+ * no file. Returns RUN_OK, solver_init's status, or RUN_BAD_INPUT for a checkpoint that does
+ * not fit, with a message in err; close_run(r) in every case. */
+static int set_up_run(run *r, const config *cfg, const checkpoint_data *cd, char *err,
+                      size_t err_len)
+{
+    memset(r, 0, sizeof *r);
+    r->cfg = cfg;
+    int status = solver_init(&r->s, cfg, err, err_len);
+    if (status || !cd) return status;
+    return restart_load(r, cd, err, err_len) ? RUN_BAD_INPUT : RUN_OK;
+}
+
+int simulation_check_checkpoint_dim(const config *cfg, const checkpoint_data *cd, char *err,
+                                    size_t err_len)
+{
+    run r;
+    int status = set_up_run(&r, cfg, cd, err, err_len);
+    close_run(&r);
+    return status;
+}
+
 /* A run from t = 0 (cd NULL) or from a checkpoint. */
 static int run_case(const config *cfg, const run_options *opt, const checkpoint_data *cd)
 {
-    run r;
-    memset(&r, 0, sizeof r);
-    r.cfg = cfg;
-    r.opt = opt;
     log_set_quiet(opt->quiet);
+    run r;
     char err[1024];
-    int status = solver_init(&r.s, cfg, err, sizeof err);
+    int status = set_up_run(&r, cfg, cd, err, sizeof err);
+    r.opt = opt;
+    /* a checkpoint that does not fit is refused before any file is touched (design §2) */
+    if (status == RUN_OK && cd && restart_check_outputs(&r, err, sizeof err))
+        status = RUN_BAD_INPUT;
     if (status) {
-        log_error("vcsph: %s", err);
+        if (cd)
+            log_error("vcsph: cannot restart from the checkpoint in %s: %s", opt->output_dir, err);
+        else
+            log_error("vcsph: %s", err);
+        close_run(&r);
         return status;
     }
     r.case_text = resolved_case_text(cfg);
-    /* a checkpoint that does not fit is refused before any file is touched (design §2) */
-    if (cd && r.case_text &&
-        (restart_load(&r, cd, err, sizeof err) || restart_check_outputs(&r, err, sizeof err))) {
-        log_error("vcsph: cannot restart from the checkpoint in %s: %s", opt->output_dir, err);
-        close_run(&r);
-        return RUN_BAD_INPUT;
-    }
     if (!r.case_text || open_outputs(&r)) {
         log_error("vcsph: cannot write the outputs in %s", opt->output_dir);
         close_run(&r);

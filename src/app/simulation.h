@@ -28,6 +28,14 @@ int simulation_resume_2d(const config *cfg, const run_options *opt,
                          const struct checkpoint_data *cd);
 int simulation_resume_3d(const config *cfg, const run_options *opt,
                          const struct checkpoint_data *cd);
+/* What simulation_resume does with cd before it touches a file: the solver set up for cfg
+ * and the checkpoint's state loaded into it and checked (app/restart.c), then everything
+ * freed. Returns RUN_OK, RUN_BAD_INPUT with a message in err for a checkpoint that does not
+ * fit, or the status of a failed solver_init. For the checkpoint reader's fuzz target. */
+int simulation_check_checkpoint_2d(const config *cfg, const struct checkpoint_data *cd, char *err,
+                                   size_t err_len);
+int simulation_check_checkpoint_3d(const config *cfg, const struct checkpoint_data *cd, char *err,
+                                   size_t err_len);
 
 struct snapshot_info;
 /* `vcsph volume`: eps_v1 and eps_gm of one snapshot file whose case is cfg. */
@@ -45,6 +53,13 @@ static inline int simulation_resume(const config *cfg, const run_options *opt,
                                     const struct checkpoint_data *cd)
 {
     return cfg->dim == 3 ? simulation_resume_3d(cfg, opt, cd) : simulation_resume_2d(cfg, opt, cd);
+}
+
+static inline int simulation_check_checkpoint(const config *cfg, const struct checkpoint_data *cd,
+                                              char *err, size_t err_len)
+{
+    return cfg->dim == 3 ? simulation_check_checkpoint_3d(cfg, cd, err, err_len)
+                         : simulation_check_checkpoint_2d(cfg, cd, err, err_len);
 }
 
 #endif

@@ -51,7 +51,7 @@ static int type_of_dataset(hid_t dset)
 
 /* HDF5 skips a user block of CHECKPOINT_HEADER bytes at the start of the file. Ours holds a
  * text header with fixed-width fields,
- *     vcsph checkpoint\nversion 1\nbytes 0000000000034580\nfnv1a64 0123456789abcdef\n
+ *     vcsph checkpoint\nversion 2\nbytes 0000000000034580\nfnv1a64 0123456789abcdef\n
  * padded with NULs: the file's length and the FNV-1a 64-bit hash of the whole file, taken
  * with the hash field's 16 digits as '0's. HDF5's own checksums leave out the space it freed
  * or never used (a few percent of a small file), and a damaged object header can leave the
@@ -62,8 +62,9 @@ enum { HEADER_SIZE = 512, IO_BLOCK = 1 << 20 };
 static const char header_magic[] = "vcsph checkpoint\n";
 #define HEADER_FORMAT "vcsph checkpoint\nversion %d\nbytes %016lld\nfnv1a64 %016llx\n"
 #define HEADER_SCAN   "vcsph checkpoint\nversion %d\nbytes %lld\nfnv1a64 %llx"
-/* offset of the hash digits: the fixed-width text before them */
-#define HASH_AT (sizeof "vcsph checkpoint\nversion 1\nbytes 0000000000000000\nfnv1a64 " - 1)
+/* offset of the hash digits: the fixed-width text before them (a one-digit version) */
+_Static_assert(CHECKPOINT_VERSION < 10, "HASH_AT counts a one-digit version");
+#define HASH_AT (sizeof "vcsph checkpoint\nversion 2\nbytes 0000000000000000\nfnv1a64 " - 1)
 
 static uint64_t fnv1a(uint64_t h, const unsigned char *p, size_t n)
 {
@@ -100,8 +101,7 @@ static int write_header_text(FILE *f, long long bytes, uint64_t hash)
                                                                                                : -1;
 }
 
-/* Fills the user block of the closed HDF5 file at path (see above) and syncs the file. */
-static int seal_file(const char *path)
+int checkpoint_seal(const char *path)
 {
     FILE *f = fopen(path, "r+b");
     if (!f) return -1;
@@ -200,12 +200,14 @@ static int sync_parent(const char *path)
     return rc;
 }
 
-/* The file with room for our header and the V110 format bounds (checkpoint.h). */
+/* The file with room for our header, the V110 format bounds and a compact root group
+ * (checkpoint.h). */
 static hid_t create_file(const char *tmp)
 {
     hid_t fcpl = H5Pcreate(H5P_FILE_CREATE), fapl = H5Pcreate(H5P_FILE_ACCESS);
     hid_t file = H5I_INVALID_HID;
     if (fcpl >= 0 && fapl >= 0 && H5Pset_userblock(fcpl, HEADER_SIZE) >= 0 &&
+        H5Pset_link_phase_change(fcpl, CHECKPOINT_MAX_ITEMS, CHECKPOINT_MAX_ITEMS / 2) >= 0 &&
         H5Pset_libver_bounds(fapl, H5F_LIBVER_V110, H5F_LIBVER_LATEST) >= 0)
         file = H5Fcreate(tmp, H5F_ACC_TRUNC, fcpl, fapl);
     if (fcpl >= 0) H5Pclose(fcpl);
@@ -233,7 +235,7 @@ static int write_temp(const char *tmp, const checkpoint_item *items, int n_items
                  hdf5_errors_detail(h, "HDF5 error"));
         rc = -1;
     }
-    if (rc == 0 && seal_file(tmp)) {
+    if (rc == 0 && checkpoint_seal(tmp)) {
         io_error(err, err_len, "checkpoint %s: cannot write its header or sync it: %s", tmp,
                  strerror(errno));
         rc = -1;
@@ -244,6 +246,11 @@ static int write_temp(const char *tmp, const checkpoint_item *items, int n_items
 int checkpoint_write(const char *path, const checkpoint_item *items, int n_items, char *err,
                      size_t err_len)
 {
+    if (n_items > CHECKPOINT_MAX_ITEMS) {
+        io_error(err, err_len, "checkpoint %s: %d arrays, more than the %d of the format", path,
+                 n_items, CHECKPOINT_MAX_ITEMS);
+        return -1;
+    }
     char *tmp = atomic_temp_path(path);
     if (!tmp) {
         io_error(err, err_len, "checkpoint %s: out of memory", path);
@@ -338,7 +345,17 @@ static int read_array(hid_t dset, checkpoint_array *a, const char *path, const h
     a->n = (size_t)n;
     a->columns = hdf5_attr_read_string(dset, "columns");
     if (a->n == 0) return 0;
-    a->data = malloc(a->n * checkpoint_type_size(a->type));
+    /* every value vcsph writes is stored: a length beyond the stored chunks (unwritten
+       chunks read as fill values) is not ours, and is refused before it is allocated */
+    size_t size = checkpoint_type_size(a->type);
+    if (a->n > SIZE_MAX / size || H5Dget_storage_size(dset) < a->n * size) {
+        io_error(err, err_len,
+                 "%s: damaged or not a vcsph checkpoint: dataset '%s' claims %zu values, more "
+                 "than it stores",
+                 path, a->name, a->n);
+        return -1;
+    }
+    a->data = malloc(a->n * size);
     if (!a->data) {
         io_error(err, err_len, "%s: out of memory for dataset '%s'", path, a->name);
         return -1;
@@ -358,6 +375,13 @@ static int read_all(hid_t file, checkpoint_data *cd, const char *path, const hdf
     if (H5Gget_info(file, &info) < 0) {
         io_error(err, err_len, "%s: damaged: cannot list its contents (%s)", path,
                  hdf5_errors_detail(h, "HDF5 error"));
+        return -1;
+    }
+    if (info.storage_type != H5G_STORAGE_TYPE_COMPACT || info.nlinks > CHECKPOINT_MAX_ITEMS) {
+        io_error(err, err_len,
+                 "%s: not a vcsph checkpoint (its root group is not a compact list of at most "
+                 "%d datasets)",
+                 path, CHECKPOINT_MAX_ITEMS);
         return -1;
     }
     cd->arrays = calloc(info.nlinks ? info.nlinks : 1, sizeof *cd->arrays);

@@ -7,6 +7,10 @@
  *   length and an FNV-1a 64-bit hash of the whole file (checkpoint.c says how), checked
  *   before HDF5 opens the file: any changed byte, truncation or extension is refused;
  * - root attributes "format" (string) and "version" (int32): the same marker for HDF5 tools;
+ * - at most CHECKPOINT_MAX_ITEMS datasets, listed in the root group's compact storage (link
+ *   messages in its object header, never HDF5's "dense" fractal heap: the reader refuses a
+ *   dense root group, which it never writes, and so never runs HDF5 1.10's dense-link code,
+ *   which crashes on some damaged heaps; docs/choices.md);
  * - one dataset per item in the root group, 1-D, typed float64 / int64 (little-endian) or
  *   uint8 (bytes: texts), chunked (at most CHECKPOINT_CHUNK_BYTES a chunk) with HDF5's
  *   Fletcher32 checksum filter, so that a damaged chunk fails its read;
@@ -27,7 +31,8 @@
 #include <stdint.h>
 
 #define CHECKPOINT_FORMAT      "vcsph checkpoint"
-#define CHECKPOINT_VERSION     1
+#define CHECKPOINT_VERSION     2 /* 1: the root group could be dense */
+#define CHECKPOINT_MAX_ITEMS   64
 #define CHECKPOINT_NAME_MAX    64
 #define CHECKPOINT_CHUNK_BYTES (4u << 20)
 
@@ -72,6 +77,12 @@ int checkpoint_write(const char *path, const checkpoint_item *items, int n_items
  * is wrong with it (empty, truncated or damaged, not a vcsph checkpoint, other version). */
 int checkpoint_read(const char *path, checkpoint_data *cd, char *err, size_t err_len);
 void checkpoint_data_free(checkpoint_data *cd);
+
+/* Writes the header (the first 512 bytes: marker, version, length and hash; see checkpoint.c)
+ * of the file at path for what it holds now, and syncs the file. checkpoint_write seals what
+ * it writes; the tests and the fuzz target seal files they changed on purpose, so that the
+ * checks behind the hash (HDF5's, and those of the reader) see them. Returns 0 or -1. */
+int checkpoint_seal(const char *path);
 
 /* The array `name` when it exists with this type and, unless n is SIZE_MAX, n values, and
  * with these columns (NULL: none expected); NULL otherwise, with a message in err. */

@@ -21,6 +21,12 @@ void hdf5_errors_begin(hdf5_errors *h);
 /* Restores the handler that was in place before hdf5_errors_begin. */
 void hdf5_errors_end(const hdf5_errors *h);
 
+/* Keeps HDF5 from closing itself at exit; call first thing in main, before any HDF5 call.
+ * vcsph closes every file it opens, so the library's exit hook has nothing to flush; it only
+ * acts after HDF5 failed to close a file whose metadata is damaged (a refused checkpoint),
+ * and then prints "HDF5: infinite loop closing library" after our one-line message. */
+void hdf5_errors_quiet_exit(void);
+
 /* The kept description, or fallback when there is none. */
 static inline const char *hdf5_errors_detail(const hdf5_errors *h, const char *fallback)
 {

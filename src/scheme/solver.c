@@ -101,6 +101,7 @@ void solver_free(solver *s)
     cells_free(&s->grid);
     neighbours_free(&s->nl);
     motion_free(&s->mo);
+    memset(s, 0, sizeof *s); /* freeing twice (a failed init, then its caller's close) is safe */
 }
 
 vec solver_g_eff(const solver *s, double t)

@@ -9,6 +9,9 @@
  *   same text again;
  * and it computes and checks the derived numbers of every case that loads (derived_compute,
  * derived_check and derived_print, as `vcsph check` does), without running the solver. */
+#define FUZZ_TARGET "fuzz_config"
+#include "fuzz_target.h"
+
 #include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -21,16 +24,6 @@
 
 #define MAX_OVERRIDES 4
 #define ERR_LEN       1024
-
-int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
-
-/* A property broken: say which (the input is what libFuzzer saves), then abort so that the
- * fuzzer and the replay both report it. */
-static void broken(const char *what, const char *detail)
-{
-    fprintf(stderr, "fuzz_config: %s\n%s\n", what, detail ? detail : "");
-    abort();
-}
 
 /* The case as config_write writes it, in a malloc'd string. */
 static char *written(const config *cfg, size_t *len)
