@@ -67,6 +67,47 @@ static inline void snapshot_name(int k, char *name, size_t size)
     snprintf(name, size, "snapshots/%06d.h5", k);
 }
 
+/* Dissipation per period needs a periodic excitation (sway or heave with a period). */
+static inline int run_has_periods(const run *r) { return r->s.dv.omega > 0.0; }
+
+static inline int run_has_probes(const config *cfg)
+{
+    return cfg->n_gauges + cfg->n_pressure_probes > 0;
+}
+
+/* The end of the excitation period in progress, kT. */
+static inline double run_period_end(const run *r) { return (double)r->period * r->cfg->period; }
+
+#define run_out_path              DIM_NAME(run_out_path)
+#define run_event                 DIM_NAME(run_event)
+#define run_open_outputs          DIM_NAME(run_open_outputs)
+#define run_write_series_row      DIM_NAME(run_write_series_row)
+#define run_write_probes_row      DIM_NAME(run_write_probes_row)
+#define run_write_dissipation_row DIM_NAME(run_write_dissipation_row)
+#define run_write_snapshot        DIM_NAME(run_write_snapshot)
+#define run_write_image           DIM_NAME(run_write_image)
+
+/* ---- run_outputs.c: the files of a run ---- */
+
+/* OUTDIR/name into buf. */
+void run_out_path(const run *r, char *buf, size_t len, const char *name);
+/* A row of events.csv at the current time. */
+void run_event(run *r, const char *what, const char *detail);
+/* Creates the output folder and its files, or for a restarted run (r->resumed) reopens them
+ * at their sizes at the checkpoint and removes what was written after it. Returns 0 or -1. */
+int run_open_outputs(run *r);
+/* One row of timeseries.csv (design §4); with_geometry 0 (a breakdown row): the volume
+ * columns empty. Raises the U_max > c0/10 event once per crossing. */
+void run_write_series_row(run *r, int with_geometry);
+/* One row of probes.csv. */
+void run_write_probes_row(run *r);
+/* One row of dissipation.csv for the period that ends now, which it closes. */
+void run_write_dissipation_row(run *r);
+/* snapshots/NNNNNN.h5 of the current state and the XDMF index. Returns 0 or -1. */
+int run_write_snapshot(run *r);
+/* images/particles_NNNNNN.png of the current state. Returns 0 or -1. */
+int run_write_image(run *r);
+
 #define run_reserve_snapshots  DIM_NAME(run_reserve_snapshots)
 #define restart_save           DIM_NAME(restart_save)
 #define restart_load           DIM_NAME(restart_load)

@@ -1,0 +1,385 @@
+/* run_outputs: the files a run writes (design §1, §4, §5): the output folder, the CSV files
+ * and their rows, snapshots with their XDMF index, particle images; opened fresh or rewound
+ * for a restart. The time loop (simulation.c) decides when each is due. */
+#include "app/run_state.h"
+#include "core/log.h"
+#include "diag/energy.h"
+#include "diag/probes.h"
+#include "diag/volume.h"
+#include "io/csv.h"
+#include "io/image.h"
+#include "io/snapshot.h"
+#include "scheme/control.h"
+#include "scheme/solver.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+static const char timeseries_header[] =
+    "t,step,dt,n_fluid,eps_v1,eps_v2,eps_v3,eps_gm,eps_sph,mass_err,eta,edbc,n_edbc,"
+    "n_free_surface,ekin,epot,eint,work_in,ediss,com_x,com_y,com_z,xmin,xmax,ymax,umax,"
+    "rho_min,rho_max,esurf,work_st";
+
+static int make_dir(const char *path)
+{
+    char buf[CONFIG_PATH_MAX + 32];
+    snprintf(buf, sizeof buf, "%s", path);
+    for (char *q = buf + 1; *q; q++) {
+        if (*q != '/') continue;
+        *q = '\0';
+        if (mkdir(buf, 0777) && errno != EEXIST) return -1;
+        *q = '/';
+    }
+    return mkdir(buf, 0777) && errno != EEXIST ? -1 : 0;
+}
+
+void run_out_path(const run *r, char *buf, size_t len, const char *name)
+{
+    snprintf(buf, len, "%s/%s", r->opt->output_dir, name);
+}
+
+void run_event(run *r, const char *what, const char *detail)
+{
+    csv_put(&r->events, r->s.t);
+    csv_put_text(&r->events, what);
+    csv_put_text(&r->events, detail);
+    csv_end_row(&r->events);
+}
+
+/* The graphical method, Eq. (15): eps_GM of the current positions (sec. 3.2). */
+static int graphical_error(solver *s, double *eps_gm)
+{
+    char err[256];
+    if (volume_graphical(&s->p, s->tank.size, s->dv.dr, s->dv.v0, eps_gm, err, sizeof err) == 0)
+        return 0;
+    log_error("vcsph: graphical method: %s", err);
+    return -1;
+}
+
+/* ekin + epot + eint of dg, and with surface tension the energy of the surface, sigma x its
+ * area, a state function too (theory §10; on a breakdown row, from the interface of the
+ * step's start): the energy whose change the dissipation leaves out. */
+static double stored_energy(run *r, const diagnostics *dg, double *esurf)
+{
+    solver *s = &r->s;
+    *esurf = s->pp.surface_tension ? surface_tension_energy(&s->st, &s->p, s->scratch) : 0.0;
+    return dg->ekin + dg->epot + dg->eint + *esurf;
+}
+
+/* ediss = work_in - (E(t) - E(0)) (theory §10) */
+static double dissipated_energy(run *r, double energy)
+{
+    return r->s.work_in - (energy - r->energy0);
+}
+
+/* One row of probes.csv: t, then the gauges, then the pressure probes (design §3). */
+void run_write_probes_row(run *r)
+{
+    const config *cfg = r->cfg;
+    csv_file *c = &r->probes_csv;
+    csv_put(c, r->s.t);
+    for (int k = 0; k < cfg->n_gauges; k++)
+        csv_put(c, probes_gauge(&r->probes, &r->s.p, cfg->gauges[k]));
+    for (int k = 0; k < cfg->n_pressure_probes; k++)
+        csv_put(c, probes_pressure(&r->probes, &r->s.p, cfg->pressure_probes[k]));
+    csv_end_row(c);
+}
+
+/* One row of timeseries.csv (design §4). The volume columns need this step's geometry
+ * (solver_prepare at the current state); a breakdown row has none and leaves them empty. */
+void run_write_series_row(run *r, int with_geometry)
+{
+    solver *s = &r->s;
+    volume_errors ve;
+    if (with_geometry) volume_compute(&s->p, s->dv.cell_volume, s->scratch, &ve);
+    diagnostics dg;
+    diagnostics_compute(s, &dg);
+    double esurf, energy = stored_energy(r, &dg, &esurf);
+    if (s->step == 0) r->energy0 = energy;
+    csv_file *c = &r->timeseries;
+    csv_put(c, s->t);
+    csv_put_long(c, s->step);
+    csv_put(c, s->last_dt);
+    csv_put_long(c, (long)s->p.n_fluid);
+    if (with_geometry) {
+        csv_put(c, ve.eps_v1);
+        csv_put(c, ve.eps_v2);
+        csv_put(c, ve.eps_v3);
+    } else {
+        for (int k = 0; k < 3; k++) csv_put_empty(c);
+    }
+    double eps_gm;
+    if (with_geometry && r->cfg->graphical && graphical_error(s, &eps_gm) == 0)
+        csv_put(c, eps_gm);
+    else
+        csv_put_empty(c);
+    csv_put(c, dg.vol_sph / r->v0 - 1.0);
+    csv_put(c, dg.mass / r->mass0 - 1.0);
+    csv_put(c, s->eta_control.eta);
+    csv_put_long(c, control_edbc_acts(s));
+    csv_put_long(c, s->n_edbc);
+    if (with_geometry)
+        csv_put_long(c, ve.n_free_surface);
+    else
+        csv_put_empty(c);
+    csv_put(c, dg.ekin);
+    csv_put(c, dg.epot);
+    csv_put(c, dg.eint);
+    csv_put(c, s->work_in);
+    csv_put(c, dissipated_energy(r, energy));
+    for (int d = 0; d < 3; d++) csv_put(c, dg.com[d]);
+    csv_put(c, dg.xmin);
+    csv_put(c, dg.xmax);
+    csv_put(c, dg.ymax);
+    csv_put(c, dg.umax);
+    csv_put(c, dg.rho_min);
+    csv_put(c, dg.rho_max);
+    csv_put(c, esurf);
+    csv_put(c, s->work_st);
+    csv_end_row(c);
+
+    /* Eq. (6): the sound speed assumes speeds below c0/10 */
+    int fast = dg.umax > 0.1 * s->pp.c0;
+    if (fast && !r->speed_warned) {
+        char detail[128];
+        snprintf(detail, sizeof detail, "U_max = %.4g m/s exceeds c0/10 = %.4g m/s (Eq. 6)",
+                 dg.umax, 0.1 * s->pp.c0);
+        run_event(r, "speed_above_c0_over_10", detail);
+    }
+    r->speed_warned = fast;
+}
+
+/* The fields of design §5 (lambda, surface and eps_vi from the geometry of this step). */
+static int snapshot_fields(solver *s, snapshot_field *f)
+{
+    particles *p = &s->p;
+    int n = 0;
+    f[n++] = (snapshot_field){"id", FIELD_INT64, 1, {p->id}};
+    f[n] = (snapshot_field){"position", FIELD_DOUBLE, DIM, {0}};
+    for (int d = 0; d < DIM; d++) f[n].component[d] = p->x[d];
+    n++;
+    f[n] = (snapshot_field){"velocity", FIELD_DOUBLE, DIM, {0}};
+    for (int d = 0; d < DIM; d++) f[n].component[d] = p->u[d];
+    n++;
+    f[n++] = (snapshot_field){"density", FIELD_DOUBLE, 1, {p->rho}};
+    f[n++] = (snapshot_field){"pressure", FIELD_DOUBLE, 1, {p->p}};
+    f[n++] = (snapshot_field){"mass", FIELD_DOUBLE, 1, {p->m}};
+    f[n++] = (snapshot_field){"volume", FIELD_DOUBLE, 1, {p->vol}};
+    f[n++] = (snapshot_field){"lambda", FIELD_DOUBLE, 1, {p->lambda}};
+    f[n++] = (snapshot_field){"surface", FIELD_UINT8, 1, {p->surface}};
+    /* the local volume error, computed into scratch just before writing */
+    for (size_t i = 0; i < p->n_fluid; i++)
+        s->scratch[i] = volume_local_error(p, i, s->dv.cell_volume);
+    f[n++] = (snapshot_field){"eps_vi", FIELD_DOUBLE, 1, {s->scratch}};
+    f[n] = (snapshot_field){"shifting", FIELD_DOUBLE, DIM, {0}};
+    for (int d = 0; d < DIM; d++) f[n].component[d] = p->shift[d];
+    n++;
+    if (s->pp.surface_tension)
+        f[n++] = (snapshot_field){"curvature", FIELD_DOUBLE, 1, {p->curvature}};
+    return n;
+}
+
+int run_reserve_snapshots(run *r, int n)
+{
+    if (n <= r->cap_snapshots) return 0;
+    int cap = r->cap_snapshots ? 2 * r->cap_snapshots : 64;
+    while (cap < n) cap *= 2;
+    char **files = realloc(r->snapshot_files, (size_t)cap * sizeof *files);
+    if (files) r->snapshot_files = files;
+    double *times = realloc(r->snapshot_times, (size_t)cap * sizeof *times);
+    if (times) r->snapshot_times = times;
+    size_t *counts = realloc(r->snapshot_counts, (size_t)cap * sizeof *counts);
+    if (counts) r->snapshot_counts = counts;
+    if (!files || !times || !counts) return -1;
+    r->cap_snapshots = cap;
+    return 0;
+}
+
+/* snapshots.xmf listing the snapshots written so far. */
+static int write_xdmf(run *r, const snapshot_field *fields, int n_fields)
+{
+    char path[CONFIG_PATH_MAX + 96], err[512];
+    run_out_path(r, path, sizeof path, "snapshots.xmf");
+    if (snapshot_write_xdmf(path, r->n_snapshots, (const char *const *)r->snapshot_files,
+                            r->snapshot_times, r->snapshot_counts, fields, n_fields, DIM, err,
+                            sizeof err)) {
+        log_error("vcsph: %s", err);
+        return -1;
+    }
+    return 0;
+}
+
+int run_write_snapshot(run *r)
+{
+    solver *s = &r->s;
+    if (run_reserve_snapshots(r, r->n_snapshots + 1)) return -1;
+    char name[64], path[CONFIG_PATH_MAX + 96], err[512];
+    snapshot_name(r->n_snapshots, name, sizeof name);
+    run_out_path(r, path, sizeof path, name);
+    snapshot_field fields[16];
+    int n_fields = snapshot_fields(s, fields);
+    snapshot_attrs attrs = {s->t,     s->step, s->eta_control.eta, DIM,
+                            s->dv.dr, s->dv.h, r->case_text};
+    if (snapshot_write(path, s->p.n_fluid, fields, n_fields, &attrs, err, sizeof err)) {
+        log_error("vcsph: %s", err);
+        return -1;
+    }
+    int k = r->n_snapshots++;
+    r->snapshot_files[k] = strdup(name);
+    r->snapshot_times[k] = s->t;
+    r->snapshot_counts[k] = s->p.n_fluid;
+    if (!r->snapshot_files[k]) return -1;
+    return write_xdmf(r, fields, n_fields);
+}
+
+/* A restarted run's snapshots.xmf lists the snapshots of the checkpoint, not those written
+ * after it (which restart_rewind_outputs removed); none: no index, as in a fresh run. */
+static int rewind_xdmf(run *r)
+{
+    if (r->n_snapshots > 0) {
+        snapshot_field fields[16];
+        return write_xdmf(r, fields, snapshot_fields(&r->s, fields));
+    }
+    char path[CONFIG_PATH_MAX + 96];
+    run_out_path(r, path, sizeof path, "snapshots.xmf");
+    return remove(path) == 0 || errno == ENOENT ? 0 : -1;
+}
+
+/* Particle images (design §1): the local volume error eps_Vi of every particle, like the
+ * paper's Figs. 13 and 21; a 3D run shows its mid-width slice, the particles within 0.6 dr of
+ * z = W/2 (one lattice layer, or the two either side of the middle). */
+#define IMAGE_PIXELS    800  /* the tank's width in the image */
+#define IMAGE_EPS_RANGE 0.02 /* colours span eps_Vi in [-2 %, +2 %] */
+
+int run_write_image(run *r)
+{
+    solver *s = &r->s;
+    const particles *p = &s->p;
+    size_t n = p->n_fluid, kept = 0;
+    double *buf = malloc(3 * (n ? n : 1) * sizeof *buf);
+    if (!buf) return -1;
+    double *x = buf, *y = buf + n, *value = buf + 2 * n;
+    for (size_t i = 0; i < n; i++) {
+#if DIM == 3
+        if (fabs(p->x[2][i] - 0.5 * s->tank.size[2]) >= 0.6 * s->dv.dr) continue;
+#endif
+        x[kept] = p->x[0][i];
+        y[kept] = p->x[1][i];
+        value[kept++] = volume_local_error(p, i, s->dv.cell_volume);
+    }
+    char title[CONFIG_NAME_MAX + 32], name[64], path[CONFIG_PATH_MAX + 96], err[512];
+    snprintf(title, sizeof title, "%s%s", r->cfg->name, DIM == 3 ? " (mid-width)" : "");
+    image_frame f = {.x = x,
+                     .y = y,
+                     .value = value,
+                     .n = kept,
+                     .radius = 0.5 * s->dv.dr,
+                     .width = s->tank.size[0],
+                     .height = s->tank.size[1],
+                     .vmin = -IMAGE_EPS_RANGE,
+                     .vmax = IMAGE_EPS_RANGE,
+                     .label = "eps_Vi",
+                     .title = title,
+                     .time = s->t};
+    snprintf(name, sizeof name, "images/particles_%06d.png", r->n_images);
+    run_out_path(r, path, sizeof path, name);
+    int status = image_write_particles(path, &f, IMAGE_PIXELS, err, sizeof err);
+    free(buf);
+    if (status) {
+        log_error("vcsph: %s", err);
+        return -1;
+    }
+    r->n_images++;
+    return 0;
+}
+
+/* Creates CSV file k with its header, or for a restarted run reopens it at its size at the
+ * checkpoint (the rows written after it are dropped). */
+static int open_csv(run *r, int k, const char *header)
+{
+    char path[CONFIG_PATH_MAX + 64];
+    run_out_path(r, path, sizeof path, run_csv_name(k));
+    if (r->resumed) return csv_reopen(run_csv(r, k), path, r->resume_sizes[k]);
+    return csv_open(run_csv(r, k), path, header);
+}
+
+/* probes.csv with the header t,gauge_1..,pressure_1.. (design §3) */
+static int open_probes(run *r)
+{
+    const config *cfg = r->cfg;
+    char header[32 + 24 * 2 * CONFIG_PROBES_MAX];
+    int len = snprintf(header, sizeof header, "t");
+    for (int k = 0; k < cfg->n_gauges; k++)
+        len += snprintf(header + len, sizeof header - (size_t)len, ",gauge_%d", k + 1);
+    for (int k = 0; k < cfg->n_pressure_probes; k++)
+        len += snprintf(header + len, sizeof header - (size_t)len, ",pressure_%d", k + 1);
+    probes_init(&r->probes, r->s.dv.h, cfg->dim == 3 ? cfg->tank_width : 1.0);
+    return open_csv(r, RUN_CSV_PROBES, header);
+}
+
+/* A fresh run starts the files; a restarted one rewinds them to the checkpoint. */
+static int open_files(run *r)
+{
+    char path[CONFIG_PATH_MAX + 64];
+    run_out_path(r, path, sizeof path, "log.txt");
+    if (log_open(path, r->resumed)) return -1;
+    run_out_path(r, path, sizeof path, "case.ini");
+    FILE *f = fopen(path, "w");
+    if (!f || fputs(r->case_text, f) == EOF || fclose(f)) return -1;
+    if (open_csv(r, RUN_CSV_TIMESERIES, timeseries_header)) return -1;
+    if (run_has_periods(r) &&
+        open_csv(r, RUN_CSV_DISSIPATION, "period,t_start,t_end,e_diss,power,power_norm"))
+        return -1;
+    if (run_has_probes(r->cfg) && open_probes(r)) return -1;
+    if (open_csv(r, RUN_CSV_EVENTS, "t,event,detail")) return -1;
+    if (r->resumed) {
+        restart_rewind_outputs(r);
+        return rewind_xdmf(r);
+    }
+    /* a checkpoint left by an earlier run here would rewind this run's files wrongly */
+    run_out_path(r, path, sizeof path, "checkpoint.h5");
+    return remove(path) == 0 || errno == ENOENT ? 0 : -1;
+}
+
+int run_open_outputs(run *r)
+{
+    char path[CONFIG_PATH_MAX + 64];
+    char images[CONFIG_PATH_MAX + 64];
+    run_out_path(r, path, sizeof path, "snapshots");
+    run_out_path(r, images, sizeof images, "images");
+    if (make_dir(r->opt->output_dir) || make_dir(path) ||
+        (r->cfg->image_every > 0 && make_dir(images))) {
+        log_error("vcsph: cannot create output directory %s: %s", r->opt->output_dir,
+                  strerror(errno));
+        return -1;
+    }
+    return open_files(r);
+}
+
+/* One row of dissipation.csv, at the end of period k (theory §10):
+ * e_diss(k) = ediss(kT) - ediss((k-1)T), P = e_diss / T, normalised by dW (dE_P with decay). */
+void run_write_dissipation_row(run *r)
+{
+    double period = r->cfg->period, esurf;
+    diagnostics dg;
+    diagnostics_compute(&r->s, &dg);
+    double ediss = dissipated_energy(r, stored_energy(r, &dg, &esurf));
+    double e = ediss - r->ediss_period_start, norm = r->s.dv.dissipation_norm;
+    csv_file *c = &r->dissipation;
+    csv_put_long(c, r->period);
+    csv_put(c, run_period_end(r) - period);
+    csv_put(c, run_period_end(r));
+    csv_put(c, e);
+    csv_put(c, e / period);
+    if (norm > 0.0)
+        csv_put(c, e / norm);
+    else
+        csv_put_empty(c); /* no amplitude, no reference energy */
+    csv_end_row(c);
+    r->ediss_period_start = ediss;
+    r->period++;
+}
