@@ -116,7 +116,9 @@ static int prepare(run *r)
     r->t_stop = step_stop(r);
     if (solver_prepare(&r->s, r->t_stop) == 0) return 0;
     progress_clear(&r->pr);
-    log_error("vcsph: out of memory at step %ld", r->s.step);
+    log_error("vcsph: out of memory at step %ld (or more than 2^31 - 1 particles with the "
+              "ghosts)",
+              r->s.step);
     return -1;
 }
 

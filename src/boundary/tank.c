@@ -2,6 +2,8 @@
 #include "boundary/tank.h"
 #include "physics/eos.h"
 
+#include <stdint.h>
+
 int tank_make_ghosts(const tank *t, particles *p, double reach)
 {
     size_t n_fluid = p->n_fluid, g = n_fluid;
@@ -26,6 +28,9 @@ int tank_make_ghosts(const tank *t, particles *p, double reach)
             unsigned walls = 0;
             for (int d = 0; d < DIM; d++) walls |= options[d][combo[d]];
             if (walls) {
+                /* the neighbour lists index fluid and ghosts with int32 (derived.c bounds the
+                   fluid alone) */
+                if (g == (size_t)INT32_MAX) return -1;
                 if (g + 1 > p->capacity && particles_reserve(p, 2 * p->capacity)) return -1;
                 p->ghost_source[g - n_fluid] = (int32_t)i;
                 p->ghost_walls[g - n_fluid] = (uint8_t)walls;

@@ -19,7 +19,8 @@ typedef struct {
 
 /* Rebuilds the ghost list: every fluid particle within `reach` of a wall gets an image across
  * it, and across each pair (and triple) of walls near an edge or corner. Only the list
- * (source, walls) is made here; tank_refresh_ghosts fills the state. Returns 0 or -1. */
+ * (source, walls) is made here; tank_refresh_ghosts fills the state. Returns 0, or -1 when
+ * out of memory or past INT32_MAX particles in all (the neighbour lists index them in int32). */
 int tank_make_ghosts(const tank *t, particles *p, double reach);
 
 /* Ghost state from the current fluid state (every RK stage): mirrored position; velocity
