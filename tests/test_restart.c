@@ -73,41 +73,16 @@ static void path_in(const char *name, char *buf, size_t size)
  * <log>.out and <log>.err there. */
 static pid_t spawn_vcsph(const char *const *args, const char *log)
 {
-    const char *argv[32] = {VCSPH_BINARY};
-    int argc = 1;
-    for (; args[argc - 1]; argc++) argv[argc] = args[argc - 1];
-    argv[argc] = NULL;
     char out[300], err[300];
     snprintf(out, sizeof out, "%s.out", log);
     snprintf(err, sizeof err, "%s.err", log);
-    fflush(NULL);
-    pid_t pid = fork();
-    if (pid == 0) {
-        /* the child: only async-signal-safe calls until execve */
-        if (chdir(group_dir)) _exit(126);
-        int o = open(out, O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        int e = open(err, O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        if (o < 0 || e < 0 || dup2(o, 1) < 0 || dup2(e, 2) < 0) _exit(126);
-        close(o);
-        close(e);
-        execve(VCSPH_BINARY, (char *const *)argv, environ);
-        _exit(127);
-    }
-    return pid;
-}
-
-static int wait_child(pid_t pid)
-{
-    int status;
-    while (waitpid(pid, &status, 0) < 0)
-        if (errno != EINTR) return -1;
-    return status;
+    return vcsph_child_spawn(group_dir, args, environ, out, err);
 }
 
 /* The exit status of vcsph with args, -1 when a signal ended it. */
 static int run_vcsph(const char *const *args, const char *log)
 {
-    int status = wait_child(spawn_vcsph(args, log));
+    int status = vcsph_child_wait(spawn_vcsph(args, log));
     if (!WIFEXITED(status)) return -1;
     int rc = WEXITSTATUS(status);
     assert_true(rc != 126 && rc != 127); /* the child could not start vcsph */
@@ -331,7 +306,7 @@ static void test_sigterm_then_restart_is_exact(void **state)
     printf("SIGTERM %ld ms after the run passed %d bytes of time series\n", delay, PROGRESS_BYTES);
     sleep_ms(delay);
     assert_int_equal(kill(pid, SIGTERM), 0);
-    int status = wait_child(pid);
+    int status = vcsph_child_wait(pid);
     assert_true(WIFEXITED(status));
     assert_int_equal(WEXITSTATUS(status), 4); /* RUN_INTERRUPTED */
     char *out = read_in_group("term.out");
@@ -378,7 +353,7 @@ static void run_and_kill(const char *const *args, const char *dir, const char *l
     printf("%s: kill -9 %ld ms after a checkpoint was written\n", log, delay);
     sleep_ms(delay);
     assert_int_equal(kill(pid, SIGKILL), 0);
-    int status = wait_child(pid);
+    int status = vcsph_child_wait(pid);
     assert_true(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL);
 }
 

@@ -15,10 +15,10 @@
 #error "VCSPH_BINARY must name the vcsph executable (CMake defines it)"
 #endif
 
-/* Runs vcsph with args (NULL-ended) in `dir` with the environment envp, its stdout and stderr
- * into stdout.txt and stderr.txt there. Returns the exit status, or -1 when a signal killed
- * it. */
-static inline int vcsph_child_run(const char *dir, const char *const *args, char *const *envp)
+/* Starts vcsph with args (NULL-ended) in `dir` with the environment envp, its stdout and stderr
+ * into the files `out` and `err` there. Returns the child's pid. */
+static inline pid_t vcsph_child_spawn(const char *dir, const char *const *args, char *const *envp,
+                                      const char *out, const char *err)
 {
     const char *argv[32] = {VCSPH_BINARY};
     int argc = 1;
@@ -33,17 +33,32 @@ static inline int vcsph_child_run(const char *dir, const char *const *args, char
     if (pid == 0) {
         /* the child: only async-signal-safe calls until execve */
         if (chdir(dir)) _exit(126);
-        int out = open("stdout.txt", O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        int err = open("stderr.txt", O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        if (out < 0 || err < 0 || dup2(out, 1) < 0 || dup2(err, 2) < 0) _exit(126);
-        close(out);
-        close(err);
+        int o = open(out, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        int e = open(err, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        if (o < 0 || e < 0 || dup2(o, 1) < 0 || dup2(e, 2) < 0) _exit(126);
+        close(o);
+        close(e);
         execve(VCSPH_BINARY, (char *const *)argv, envp);
         _exit(127);
     }
+    return pid;
+}
+
+/* The wait status of child pid once it has ended. */
+static inline int vcsph_child_wait(pid_t pid)
+{
     int status;
     while (waitpid(pid, &status, 0) < 0)
         if (errno != EINTR) fail_msg("waitpid: %s", strerror(errno));
+    return status;
+}
+
+/* Runs vcsph with args (NULL-ended) in `dir` with the environment envp, its stdout and stderr
+ * into stdout.txt and stderr.txt there. Returns the exit status, or -1 when a signal killed
+ * it. */
+static inline int vcsph_child_run(const char *dir, const char *const *args, char *const *envp)
+{
+    int status = vcsph_child_wait(vcsph_child_spawn(dir, args, envp, "stdout.txt", "stderr.txt"));
     if (WIFSIGNALED(status)) {
         print_error("vcsph died of signal %d\n", WTERMSIG(status));
         return -1;

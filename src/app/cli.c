@@ -16,7 +16,6 @@ void cli_usage(FILE *out)
           "       vcsph --help | --version\n"
           "\n"
           "  run     run the case; outputs go to output.dir of the case (default out/<name>)\n"
-
           "  check   validate the case and print the derived numbers; runs nothing\n"
           "  volume  print t, eps_v1 (Eq. 12) and eps_gm (Eq. 15) of saved snapshots (CSV)\n"
           "  plot    PNG plots of a run's output directory with gnuplot, into OUTDIR/images\n"

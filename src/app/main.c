@@ -99,11 +99,9 @@ static void folder_of(const char *path, char *dir, size_t size)
 static int checkpoint_case(const checkpoint_data *cd, const cli_args *args, config *cfg)
 {
     char err[2048];
-    const checkpoint_array *a =
-        checkpoint_find(cd, "case", CHECKPOINT_BYTES, SIZE_MAX, NULL, err, sizeof err);
-    char *text = a ? strndup(a->data ? (const char *)a->data : "", a->n) : NULL;
+    char *text = checkpoint_text(cd, "case", err, sizeof err);
     if (!text) {
-        fprintf(stderr, "vcsph: %s: %s\n", args->restart_path, a ? "out of memory" : err);
+        fprintf(stderr, "vcsph: %s: %s\n", args->restart_path, err);
         return RUN_BAD_INPUT;
     }
     int status = config_load_string(cfg, text, args->restart_path, args->overrides,

@@ -55,10 +55,8 @@
 static const char *const x_names[3] = {"x_0", "x_1", "x_2"};
 static const char *const u_names[3] = {"u_0", "u_1", "u_2"};
 
-enum { MAX_ITEMS = CHECKPOINT_MAX_ITEMS };
-
 typedef struct {
-    checkpoint_item items[MAX_ITEMS];
+    checkpoint_item items[CHECKPOINT_MAX_ITEMS];
     int n;
 } item_list;
 
@@ -66,6 +64,34 @@ static void add(item_list *l, const char *name, checkpoint_type type, size_t n, 
                 const char *columns)
 {
     l->items[l->n++] = (checkpoint_item){name, type, n, data, columns};
+}
+
+/* The float64 scalars, group by group in the order of their columns: restart_save gathers
+ * them through these pointers and restart_load puts them back, so both follow one list. */
+enum { F64_GROUPS = 3, F64_GROUP_MAX = 8 };
+
+typedef struct {
+    const char *name, *columns;
+    int n;
+    double *field[F64_GROUP_MAX];
+} f64_group;
+
+static void f64_groups(run *r, f64_group g[F64_GROUPS])
+{
+    solver *s = &r->s;
+    eta_controller *e = &s->eta_control;
+    g[0] = (f64_group){
+        "solver_f64", SOLVER_F64, 5, {&s->t, &s->last_dt, &s->max_acc, &s->work_in, &s->work_st}};
+    g[1] = (f64_group){"eta_f64",
+                       ETA_F64,
+                       8,
+                       {&e->threshold, &e->period, &e->eta, &e->t_last, &e->eps_last, &e->integral,
+                        &e->eps_mean, &e->eps_expected}};
+    g[2] = (f64_group){"run_f64",
+                       RUN_F64,
+                       7,
+                       {&r->energy0, &r->mass0, &r->v0, &r->ediss_period_start, &r->next_series,
+                        &r->next_snapshot, &r->next_image}};
 }
 
 static void add_particles(item_list *l, const particles *p)
@@ -113,13 +139,13 @@ int restart_save(run *r, const char *path, char *err, size_t err_len)
     const eta_controller *e = &s->eta_control;
     int64_t csv_sizes[RUN_N_CSV];
     if (sync_csv_files(r, csv_sizes, err, err_len)) return -1;
-    const double solver_f64[] = {s->t, s->last_dt, s->max_acc, s->work_in, s->work_st};
+    f64_group groups[F64_GROUPS];
+    f64_groups(r, groups);
+    double f64_values[F64_GROUPS][F64_GROUP_MAX];
+    for (int g = 0; g < F64_GROUPS; g++)
+        for (int k = 0; k < groups[g].n; k++) f64_values[g][k] = *groups[g].field[k];
     const int64_t solver_i64[] = {DIM, (int64_t)s->p.n_fluid, s->step, s->n_edbc};
-    const double eta_f64[] = {e->threshold, e->period,   e->eta,      e->t_last,
-                              e->eps_last,  e->integral, e->eps_mean, e->eps_expected};
     const int64_t eta_i64[] = {e->switching, e->kind, e->eta0_regime, e->switches, e->n_samples};
-    const double run_f64[] = {r->energy0,     r->mass0,         r->v0,        r->ediss_period_start,
-                              r->next_series, r->next_snapshot, r->next_image};
     const int64_t run_i64[] = {r->period, r->n_snapshots, r->n_images, r->speed_warned};
     size_t n_snap = (size_t)r->n_snapshots, names_len;
     int64_t *counts = malloc((n_snap ? n_snap : 1) * sizeof *counts);
@@ -134,12 +160,12 @@ int restart_save(run *r, const char *path, char *err, size_t err_len)
 
     item_list l = {.n = 0};
     add(&l, "case", CHECKPOINT_BYTES, strlen(r->case_text), r->case_text, NULL);
-    add(&l, "solver_f64", CHECKPOINT_F64, 5, solver_f64, SOLVER_F64);
+    for (int g = 0; g < F64_GROUPS; g++)
+        add(&l, groups[g].name, CHECKPOINT_F64, (size_t)groups[g].n, f64_values[g],
+            groups[g].columns);
     add(&l, "solver_i64", CHECKPOINT_I64, 4, solver_i64, SOLVER_I64);
-    add(&l, "eta_f64", CHECKPOINT_F64, 8, eta_f64, ETA_F64);
     add(&l, "eta_i64", CHECKPOINT_I64, 5, eta_i64, ETA_I64);
     add(&l, "eta_samples", CHECKPOINT_F64, ETA_HISTORY, e->samples, NULL);
-    add(&l, "run_f64", CHECKPOINT_F64, 7, run_f64, RUN_F64);
     add(&l, "run_i64", CHECKPOINT_I64, 4, run_i64, RUN_I64);
     add(&l, "csv_sizes", CHECKPOINT_I64, RUN_N_CSV, csv_sizes, CSV_SIZES);
     add(&l, "snapshot_times", CHECKPOINT_F64, n_snap, r->snapshot_times, NULL);
@@ -190,24 +216,24 @@ static int load_particles(solver *s, const checkpoint_data *cd, char *err, size_
     return rc ? -1 : 0;
 }
 
-static int load_solver_scalars(solver *s, const checkpoint_data *cd, char *err, size_t err_len)
+static int load_f64_scalars(run *r, const checkpoint_data *cd, char *err, size_t err_len)
 {
-    double v[5];
-    if (take(cd, "solver_f64", CHECKPOINT_F64, 5, SOLVER_F64, v, err, err_len)) return -1;
-    s->t = v[0];
-    s->last_dt = v[1];
-    s->max_acc = v[2];
-    s->work_in = v[3];
-    s->work_st = v[4];
+    f64_group groups[F64_GROUPS];
+    f64_groups(r, groups);
+    for (int g = 0; g < F64_GROUPS; g++) {
+        double v[F64_GROUP_MAX];
+        if (take(cd, groups[g].name, CHECKPOINT_F64, (size_t)groups[g].n, groups[g].columns, v, err,
+                 err_len))
+            return -1;
+        for (int k = 0; k < groups[g].n; k++) *groups[g].field[k] = v[k];
+    }
     return 0;
 }
 
 static int load_eta_control(eta_controller *e, const checkpoint_data *cd, char *err, size_t err_len)
 {
-    double v[8];
     int64_t k[5];
-    if (take(cd, "eta_f64", CHECKPOINT_F64, 8, ETA_F64, v, err, err_len) ||
-        take(cd, "eta_i64", CHECKPOINT_I64, 5, ETA_I64, k, err, err_len) ||
+    if (take(cd, "eta_i64", CHECKPOINT_I64, 5, ETA_I64, k, err, err_len) ||
         take(cd, "eta_samples", CHECKPOINT_F64, ETA_HISTORY, NULL, e->samples, err, err_len))
         return -1;
     /* the kind of control and whether it switches follow from the case (eta_control_init,
@@ -216,14 +242,6 @@ static int load_eta_control(eta_controller *e, const checkpoint_data *cd, char *
         snprintf(err, err_len, "dataset 'eta_i64' holds another eta control than the case's");
         return -1;
     }
-    e->threshold = v[0];
-    e->period = v[1];
-    e->eta = v[2];
-    e->t_last = v[3];
-    e->eps_last = v[4];
-    e->integral = v[5];
-    e->eps_mean = v[6];
-    e->eps_expected = v[7];
     e->eta0_regime = k[2] != 0;
     e->switches = k[3];
     e->n_samples = k[4];
@@ -268,23 +286,14 @@ static int load_snapshot_index(run *r, const checkpoint_data *cd, int n, char *e
 
 static int load_outputs(run *r, const checkpoint_data *cd, char *err, size_t err_len)
 {
-    double v[7];
     int64_t k[4], sizes[RUN_N_CSV];
-    if (take(cd, "run_f64", CHECKPOINT_F64, 7, RUN_F64, v, err, err_len) ||
-        take(cd, "run_i64", CHECKPOINT_I64, 4, RUN_I64, k, err, err_len) ||
+    if (take(cd, "run_i64", CHECKPOINT_I64, 4, RUN_I64, k, err, err_len) ||
         take(cd, "csv_sizes", CHECKPOINT_I64, RUN_N_CSV, CSV_SIZES, sizes, err, err_len))
         return -1;
     if (k[1] < 0 || k[1] > INT32_MAX || k[2] < 0 || k[2] > INT32_MAX) {
         snprintf(err, err_len, "dataset 'run_i64' holds impossible counts");
         return -1;
     }
-    r->energy0 = v[0];
-    r->mass0 = v[1];
-    r->v0 = v[2];
-    r->ediss_period_start = v[3];
-    r->next_series = v[4];
-    r->next_snapshot = v[5];
-    r->next_image = v[6];
     r->period = k[0];
     r->n_images = (int)k[2];
     r->speed_warned = (int)k[3];
@@ -360,7 +369,7 @@ static int check_state(const run *r, char *err, size_t err_len)
 int restart_load(run *r, const checkpoint_data *cd, char *err, size_t err_len)
 {
     solver *s = &r->s;
-    if (load_particles(s, cd, err, err_len) || load_solver_scalars(s, cd, err, err_len) ||
+    if (load_particles(s, cd, err, err_len) || load_f64_scalars(r, cd, err, err_len) ||
         load_eta_control(&s->eta_control, cd, err, err_len) || load_outputs(r, cd, err, err_len) ||
         check_state(r, err, err_len))
         return -1;

@@ -58,7 +58,7 @@ static int type_of_dataset(hid_t dset)
  * library in a state where it cannot shut down cleanly; the hash refuses any changed byte, a
  * truncation or an extension before HDF5 sees the file. (FNV-1a catches every single-byte
  * change: each step is a bijection of the running hash.) */
-enum { HEADER_SIZE = 512, IO_BLOCK = 1 << 20 };
+enum { HEADER_SIZE = CHECKPOINT_HEADER_SIZE, IO_BLOCK = 1 << 20 };
 static const char header_magic[] = "vcsph checkpoint\n";
 #define HEADER_FORMAT "vcsph checkpoint\nversion %d\nbytes %016lld\nfnv1a64 %016llx\n"
 #define HEADER_SCAN   "vcsph checkpoint\nversion %d\nbytes %lld\nfnv1a64 %llx"
@@ -179,24 +179,17 @@ static int write_items(hid_t file, const checkpoint_item *items, int n_items, co
     return 0;
 }
 
-/* fsync of a folder by name: the rename that publishes the checkpoint reaches the disk. */
-static int sync_path(const char *path, int flags)
-{
-    int fd = open(path, flags);
-    if (fd < 0) return -1;
-    int rc = fsync(fd);
-    close(fd);
-    return rc;
-}
-
+/* fsync of the folder that holds path: the rename that publishes the checkpoint reaches the
+ * disk. */
 static int sync_parent(const char *path)
 {
     const char *slash = strrchr(path, '/');
-    if (!slash) return sync_path(".", O_RDONLY | O_DIRECTORY);
-    if (slash == path) return sync_path("/", O_RDONLY | O_DIRECTORY);
-    char *dir = strndup(path, (size_t)(slash - path));
-    int rc = dir ? sync_path(dir, O_RDONLY | O_DIRECTORY) : -1;
+    char *dir = !slash ? strdup(".") : strndup(path, slash == path ? 1 : (size_t)(slash - path));
+    int fd = dir ? open(dir, O_RDONLY | O_DIRECTORY) : -1;
     free(dir);
+    if (fd < 0) return -1;
+    int rc = fsync(fd);
+    close(fd);
     return rc;
 }
 
@@ -546,4 +539,14 @@ const checkpoint_array *checkpoint_find(const checkpoint_data *cd, const char *n
     }
     io_error(err, err_len, "no dataset '%s'", name);
     return NULL;
+}
+
+char *checkpoint_text(const checkpoint_data *cd, const char *name, char *err, size_t err_len)
+{
+    const checkpoint_array *a =
+        checkpoint_find(cd, name, CHECKPOINT_BYTES, SIZE_MAX, NULL, err, err_len);
+    if (!a) return NULL;
+    char *text = strndup(a->data ? (const char *)a->data : "", a->n);
+    if (!text) io_error(err, err_len, "out of memory for dataset '%s'", name);
+    return text;
 }

@@ -33,6 +33,7 @@
 #define CHECKPOINT_FORMAT      "vcsph checkpoint"
 #define CHECKPOINT_VERSION     2 /* 1: the root group could be dense */
 #define CHECKPOINT_MAX_ITEMS   64
+#define CHECKPOINT_HEADER_SIZE 512 /* the user block holding our header */
 #define CHECKPOINT_NAME_MAX    64
 #define CHECKPOINT_CHUNK_BYTES (4u << 20)
 
@@ -89,5 +90,9 @@ int checkpoint_seal(const char *path);
 const checkpoint_array *checkpoint_find(const checkpoint_data *cd, const char *name,
                                         checkpoint_type type, size_t n, const char *columns,
                                         char *err, size_t err_len);
+
+/* The bytes array `name` as a C string (up to its first NUL) in malloc'd memory: a text
+ * item such as the case. NULL with a message in err when there is none or memory ran out. */
+char *checkpoint_text(const checkpoint_data *cd, const char *name, char *err, size_t err_len);
 
 #endif

@@ -42,8 +42,6 @@
 #include <hdf5.h>
 
 #define ERR_LEN 2048
-/* the header checkpoint_seal writes (io/checkpoint.c); a shorter input has no room for it */
-#define HEADER_SIZE 512
 /* Cases of more particles are not loaded: the solver's arrays for millions of particles
  * would test the memory of the machine, not the reader. The seeds have a few dozen. */
 #define MAX_PARTICLES 20000
@@ -95,10 +93,7 @@ static void check_arrays(const checkpoint_data *cd)
 static int checkpoint_config(const checkpoint_data *cd, config *cfg)
 {
     char err[ERR_LEN];
-    const checkpoint_array *a =
-        checkpoint_find(cd, "case", CHECKPOINT_BYTES, SIZE_MAX, NULL, err, sizeof err);
-    if (!a) return -1;
-    char *text = strndup(a->data ? (const char *)a->data : "", a->n);
+    char *text = checkpoint_text(cd, "case", err, sizeof err);
     if (!text) return -1;
     int rc = config_load_string(cfg, text, "fuzz", NULL, 0, err, sizeof err);
     free(text);
@@ -215,7 +210,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     const char *path = scratch_path();
     write_scratch(path, data, size);
     read_checkpoint(path, 0);
-    if (size >= HEADER_SIZE) {
+    if (size >= CHECKPOINT_HEADER_SIZE) { /* room for the header checkpoint_seal writes */
         if (checkpoint_seal(path)) broken("checkpoint_seal failed", strerror(errno));
     } else {
         edit_seed(path, data, size);
