@@ -38,7 +38,7 @@ sanitize: deps
 
 bench: deps
 	@$(MAKE) --no-print-directory build
-	$(BUILD)/bench_step 30 delta delta-plus-ale delta-ale
+	$(BUILD)/bench_step 30 delta delta-plus-ale:none delta-plus-ale delta-ale
 	$(BUILD)/checkpoint_io $(BUILD)
 
 clean:

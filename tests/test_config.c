@@ -68,7 +68,9 @@ static void test_minimal_gives_defaults(void **state)
     assert_true(c.phase == 0.0 && c.duration == 0.0);
     assert_string_equal(c.motion_file, "");
     assert_int_equal(c.scheme, SCHEME_DELTA_PLUS_ALE);
-    assert_int_equal(c.edbc, EDBC_ON);
+    /* auto, resolved for delta-plus-ALE (docs/case-file.md) */
+    assert_int_equal(c.edbc, EDBC_WITH_ETA0);
+    assert_int_equal(c.volume_correction, VOLUME_CORRECTION_GEOMETRIC);
     assert_true(c.eta_threshold == 0.01);
     assert_int_equal(c.eta_control, ETA_CONTROL_THRESHOLD);
     assert_true(c.les);
@@ -206,6 +208,8 @@ static void test_names(void **state)
     assert_string_equal(config_edbc_name(EDBC_OFF), "false");
     assert_string_equal(config_edbc_name(EDBC_ON), "true");
     assert_string_equal(config_edbc_name(EDBC_WITH_ETA0), "with-eta0");
+    assert_string_equal(config_volume_correction_name(VOLUME_CORRECTION_NONE), "none");
+    assert_string_equal(config_volume_correction_name(VOLUME_CORRECTION_GEOMETRIC), "geometric");
     assert_string_equal(config_eta_control_name(ETA_CONTROL_THRESHOLD), "threshold");
     assert_string_equal(config_eta_control_name(ETA_CONTROL_ADAPTIVE), "adaptive");
     assert_string_equal(config_wall_name(WALL_NO_SLIP), "no-slip");
@@ -310,6 +314,39 @@ static void test_liquid_shape(void **state)
     assert_round_trip(&c);
 }
 
+/* model.edbc and model.volume_correction default to auto, resolved by the scheme: with-eta0
+ * and geometric for delta-plus-ALE, false and none for the other four (the paper's Fig. 7
+ * baseline); an explicit value is kept whatever the scheme; the resolved case says the
+ * resolved value, never auto. */
+static void test_scheme_dependent_defaults(void **state)
+{
+    (void)state;
+    static const char *const schemes[] = {"standard", "delta", "delta-plus", "delta-ale",
+                                          "delta-plus-ale"};
+    config c;
+    char err[ERR_LEN], set[64];
+    for (int k = 0; k < 5; k++) {
+        snprintf(set, sizeof set, "model.scheme=%s", schemes[k]);
+        const char *sets[] = {set};
+        assert_int_equal(load_text(&c, MINIMAL, sets, 1, err), 0);
+        bool plus_ale = k == 4;
+        assert_int_equal(c.edbc, plus_ale ? EDBC_WITH_ETA0 : EDBC_OFF);
+        assert_int_equal(c.volume_correction,
+                         plus_ale ? VOLUME_CORRECTION_GEOMETRIC : VOLUME_CORRECTION_NONE);
+        assert_round_trip(&c);
+        const char *explicit[] = {set, "model.edbc=true", "model.volume_correction=geometric"};
+        assert_int_equal(load_text(&c, MINIMAL, explicit, 3, err), 0);
+        assert_int_equal(c.edbc, EDBC_ON);
+        assert_int_equal(c.volume_correction, VOLUME_CORRECTION_GEOMETRIC);
+        explicit[2] = "model.volume_correction=none";
+        assert_int_equal(load_text(&c, MINIMAL, explicit, 3, err), 0);
+        assert_int_equal(c.volume_correction, VOLUME_CORRECTION_NONE);
+    }
+    const char *bad[] = {"model.volume_correction=khayyer"};
+    assert_int_equal(load_text(&c, MINIMAL, bad, 1, err), 2);
+    assert_non_null(strstr(err, "model.volume_correction"));
+}
+
 /* Every key of design §3 is written, each section once, in the design's order. */
 static void test_write_has_every_key(void **state)
 {
@@ -331,8 +368,9 @@ static void test_write_has_every_key(void **state)
         if (*line == '\n') line++;
         if (*line && *line != ';' && *line != '[' && *line != '\n') n_keys++;
     }
-    /* design §3 plus numerics.density_bound, liquid.shape and case.experiment_dissipation */
-    assert_int_equal(n_keys, 42);
+    /* design §3 plus numerics.density_bound, liquid.shape, case.experiment_dissipation and
+       model.volume_correction */
+    assert_int_equal(n_keys, 43);
     assert_non_null(strstr(text, "\nsound_speed      = auto ;"));
     assert_non_null(strstr(text, "\nh_over_dr        = 2 ;"));
     assert_non_null(strstr(text, "\nlength           = 1 ;"));
@@ -612,6 +650,7 @@ int main(void)
         cmocka_unit_test(test_round_trip_minimal_and_full),
         cmocka_unit_test(test_round_trip_awkward_values),
         cmocka_unit_test(test_liquid_shape),
+        cmocka_unit_test(test_scheme_dependent_defaults),
         cmocka_unit_test(test_write_has_every_key),
         cmocka_unit_test(test_line_too_long),
         cmocka_unit_test(test_errors_name_the_file),

@@ -13,6 +13,7 @@
 #include <cmocka.h>
 
 #include "check.h"
+#include "same_file.h"
 #include "table.h"
 
 static const double gravity = 9.81, depth = 0.2, rho0 = 1000.0, length = 0.4;
@@ -144,20 +145,6 @@ static void test_hydrostatic_pressure(void **state)
     free(p);
     free(x);
     H5Fclose(file);
-}
-
-static int same_file(const char *a, const char *b)
-{
-    FILE *fa = fopen(a, "rb"), *fb = fopen(b, "rb");
-    int same = fa && fb;
-    while (same) {
-        int ca = fgetc(fa), cb = fgetc(fb);
-        if (ca != cb) same = 0;
-        if (ca == EOF || cb == EOF) break;
-    }
-    if (fa) fclose(fa);
-    if (fb) fclose(fb);
-    return same;
 }
 
 /* The same case on one thread into a second folder with the same name gives the same bytes. */

@@ -22,7 +22,7 @@
 static const char timeseries_header[] =
     "t,step,dt,n_fluid,eps_v1,eps_v2,eps_v3,eps_gm,eps_sph,mass_err,eta,edbc,n_edbc,"
     "n_free_surface,ekin,epot,eint,work_in,ediss,com_x,com_y,com_z,xmin,xmax,ymax,umax,"
-    "rho_min,rho_max,esurf,work_st";
+    "rho_min,rho_max,esurf,work_st,deps_u,deps_du,deps_corr";
 
 static int make_dir(const char *path)
 {
@@ -140,6 +140,15 @@ void run_write_series_row(run *r, int with_geometry)
     csv_put(c, dg.rho_max);
     csv_put(c, esurf);
     csv_put(c, s->work_st);
+    if (with_geometry) {
+        volume_rates rate;
+        volume_rate(&s->pp.k, &s->p, &s->nl, s->dv.cell_volume, s->scratch, &rate);
+        csv_put(c, rate.u);
+        csv_put(c, rate.shift);
+        csv_put(c, rate.correction);
+    } else {
+        for (int k = 0; k < 3; k++) csv_put_empty(c);
+    }
     csv_end_row(c);
 
     /* Eq. (6): the sound speed assumes speeds below c0/10 */

@@ -81,7 +81,15 @@ void tank_mirror_step_fields(particles *p, vec g_eff, double c0)
         p->nu_t[g] = p->nu_t[i];
         p->nu_delta[g] = p->nu_delta[i];
         vec_store(p->shift, g, tank_mirror_vector(vec_load(p->shift, i), walls));
+        vec_store(p->correction, g, tank_mirror_vector(vec_load(p->correction, i), walls));
     }
+}
+
+void tank_copy_to_ghosts(const particles *p, double *field)
+{
+    size_t n_fluid = p->n_fluid;
+#pragma omp parallel for schedule(static)
+    for (size_t g = n_fluid; g < p->n_total; g++) field[g] = field[p->ghost_source[g - n_fluid]];
 }
 
 /* Reverses v when it points towards the wall on the `side` (-1: low wall, +1: high wall). */
@@ -95,7 +103,7 @@ size_t tank_bounce_back(const tank *t, particles *p, double dr, double dt)
     for (size_t i = 0; i < p->n_fluid; i++) {
         int hit = 0;
         for (int d = 0; d < DIM; d++) {
-            double transport = p->u[d][i] + p->shift[d][i];
+            double transport = p->u[d][i] + p->shift[d][i] + p->correction[d][i];
             double ahead = p->x[d][i] + transport * dt;
             int side = ahead < near && transport < 0.0                ? -1
                        : t->size[d] - ahead < near && transport > 0.0 ? 1
@@ -103,6 +111,7 @@ size_t tank_bounce_back(const tank *t, particles *p, double dr, double dt)
             if (!side) continue;
             p->u[d][i] = away_from_wall(p->u[d][i], side);
             p->shift[d][i] = away_from_wall(p->shift[d][i], side);
+            p->correction[d][i] = away_from_wall(p->correction[d][i], side);
             hit = 1;
         }
         bounced += (size_t)hit;

@@ -16,6 +16,7 @@ typedef struct {
 #define tank_refresh_ghosts     DIM_NAME(tank_refresh_ghosts)
 #define tank_mirror_step_fields DIM_NAME(tank_mirror_step_fields)
 #define tank_bounce_back        DIM_NAME(tank_bounce_back)
+#define tank_copy_to_ghosts     DIM_NAME(tank_copy_to_ghosts)
 
 /* Rebuilds the ghost list: every fluid particle within `reach` of a wall gets an image across
  * it, and across each pair (and triple) of walls near an edge or corner. Only the list
@@ -30,17 +31,22 @@ int tank_make_ghosts(const tank *t, particles *p, double reach);
 void tank_refresh_ghosts(const tank *t, particles *p, vec g_eff, double rho0, double c0);
 
 /* Per-step fields of the ghosts from their sources: eddy viscosity and diffusion coefficient
- * copied; shifting velocity mirrored (free slip); density gradient = mirror of the source's dynamic
- * part plus the hydrostatic gradient rho g_eff / c0^2, consistent with the hydrostatic continuation
- * above. */
+ * copied; shifting and volume-correction velocities mirrored (free slip); density gradient = mirror
+ * of the source's dynamic part plus the hydrostatic gradient rho g_eff / c0^2, consistent with the
+ * hydrostatic continuation above. */
 void tank_mirror_step_fields(particles *p, vec g_eff, double c0);
 
+/* A per-particle scalar of the fluid copied to its ghosts (a field that is even across the
+ * walls: the ghost carries its source's value). */
+void tank_copy_to_ghosts(const particles *p, double *field);
+
 /* Bounce-back (sec. 2.5), at the start of a step once its shifting velocity du is known:
- * a particle that its transport velocity u + du takes closer than dr/4 to a wall within the
- * step `dt` (or past it) has the normal components of u and du that point at the wall
- * reversed, tangential ones kept. Looking a step ahead matters: during a roof impact a
- * particle moves half a spacing per step. Reversing u alone fails with ALE, where du may
- * carry a particle into the wall that u takes away from it. Returns the particles bounced. */
+ * a particle that its transport velocity u + du (+ the volume correction's) takes closer than
+ * dr/4 to a wall within the step `dt` (or past it) has the normal components of these
+ * velocities that point at the wall reversed, tangential ones kept. Looking a step ahead matters:
+ * during a roof impact a particle moves half a spacing per step. Reversing u alone fails with ALE,
+ * where du may carry a particle into the wall that u takes away from it. Returns the particles
+ * bounced. */
 size_t tank_bounce_back(const tank *t, particles *p, double dr, double dt);
 
 /* Distance to the nearest wall plane (sec. 2.5) and its axis. */

@@ -34,6 +34,7 @@
 _Static_assert(sizeof(scheme_kind) == sizeof(int), "enum size");
 _Static_assert(sizeof(motion_kind) == sizeof(int), "enum size");
 _Static_assert(sizeof(edbc_mode) == sizeof(int), "enum size");
+_Static_assert(sizeof(volume_correction_kind) == sizeof(int), "enum size");
 _Static_assert(sizeof(eta_control_kind) == sizeof(int), "enum size");
 _Static_assert(sizeof(wall_kind) == sizeof(int), "enum size");
 _Static_assert(sizeof(liquid_shape_kind) == sizeof(int), "enum size");
@@ -109,7 +110,8 @@ static const char *const bool_words[] = {"false", "true", NULL};
 static const char *const motion_words[] = {"none", "sway", "heave", "table", NULL};
 static const char *const scheme_words[] = {"standard",  "delta",          "delta-plus",
                                            "delta-ale", "delta-plus-ale", NULL};
-static const char *const edbc_words[] = {"false", "true", "with-eta0", NULL};
+static const char *const edbc_words[] = {"false", "true", "with-eta0", "auto", NULL};
+static const char *const volume_correction_words[] = {"none", "geometric", "auto", NULL};
 static const char *const eta_control_words[] = {"threshold", "adaptive", NULL};
 static const char *const wall_words[] = {"no-slip", "free-slip", NULL};
 static const char *const liquid_shape_words[] = {"box", "ellipse", NULL};
@@ -167,8 +169,11 @@ static const key_spec keys[] = {
 
     KEY("model", "scheme", KIND_WORD, 0, "delta-plus-ale", scheme, ANY, scheme_words,
         "one of standard | delta | delta-plus | delta-ale | delta-plus-ale"),
-    KEY("model", "edbc", KIND_WORD, 0, "true", edbc, ANY, edbc_words,
-        "one of true | false | with-eta0"),
+    KEY("model", "edbc", KIND_WORD, 0, "auto", edbc, ANY, edbc_words,
+        "one of auto | true | false | with-eta0 (auto: with-eta0 for delta-plus-ale, else false)"),
+    KEY("model", "volume_correction", KIND_WORD, 0, "auto", volume_correction, ANY,
+        volume_correction_words,
+        "one of auto | none | geometric (auto: geometric for delta-plus-ale, else none)"),
     KEY("model", "eta_threshold", KIND_REAL, 0, "0.01", eta_threshold, OPEN(0.0, 1.0), NULL,
         "a number in (0, 1)"),
     KEY("model", "eta_control", KIND_WORD, 0, "threshold", eta_control, ANY, eta_control_words,
@@ -1048,6 +1053,11 @@ static void resolve_defaults(parse_ctx *ctx)
     config *cfg = ctx->cfg;
     if (!given(ctx, key_of("liquid", "length"))) cfg->liquid_length = cfg->tank_length;
     if (!given(ctx, key_of("numerics", "h_over_dr"))) cfg->h_over_dr = cfg->dim == 3 ? 1.5 : 2.0;
+    /* the scheme-dependent defaults (docs/volume-correction.md, "Defaults") */
+    bool plus_ale = cfg->scheme == SCHEME_DELTA_PLUS_ALE;
+    if (cfg->edbc == EDBC_AUTO) cfg->edbc = plus_ale ? EDBC_WITH_ETA0 : EDBC_OFF;
+    if (cfg->volume_correction == VOLUME_CORRECTION_AUTO)
+        cfg->volume_correction = plus_ale ? VOLUME_CORRECTION_GEOMETRIC : VOLUME_CORRECTION_NONE;
     if (!expand_name(cfg->output_dir, sizeof cfg->output_dir, cfg->name))
         fail_key(ctx, key_of("output", "dir"), "too long once '<name>' is replaced");
 }
@@ -1257,6 +1267,10 @@ void config_write(const config *cfg, FILE *out)
 const char *config_scheme_name(scheme_kind s) { return word_at(scheme_words, (int)s); }
 const char *config_motion_name(motion_kind m) { return word_at(motion_words, (int)m); }
 const char *config_edbc_name(edbc_mode e) { return word_at(edbc_words, (int)e); }
+const char *config_volume_correction_name(volume_correction_kind v)
+{
+    return word_at(volume_correction_words, (int)v);
+}
 const char *config_eta_control_name(eta_control_kind e)
 {
     return word_at(eta_control_words, (int)e);

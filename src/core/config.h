@@ -19,7 +19,16 @@ typedef enum {
 } scheme_kind;
 
 typedef enum { MOTION_NONE, MOTION_SWAY, MOTION_HEAVE, MOTION_TABLE } motion_kind;
-typedef enum { EDBC_OFF, EDBC_ON, EDBC_WITH_ETA0 } edbc_mode;
+/* EDBC_AUTO is resolved by config_load (with-eta0 for delta-plus-ALE, false otherwise) and
+ * never reaches the solver. */
+typedef enum { EDBC_OFF, EDBC_ON, EDBC_WITH_ETA0, EDBC_AUTO } edbc_mode;
+/* The geometric volume correction (docs/volume-correction.md); VOLUME_CORRECTION_AUTO is
+ * resolved by config_load and never reaches the solver. */
+typedef enum {
+    VOLUME_CORRECTION_NONE,
+    VOLUME_CORRECTION_GEOMETRIC,
+    VOLUME_CORRECTION_AUTO
+} volume_correction_kind;
 typedef enum { ETA_CONTROL_THRESHOLD, ETA_CONTROL_ADAPTIVE } eta_control_kind;
 typedef enum { WALL_NO_SLIP, WALL_FREE_SLIP } wall_kind;
 /* The liquid at t = 0: the whole box, or the ellipse (ellipsoid) inscribed in it. */
@@ -46,6 +55,7 @@ typedef struct {
     /* [model] */
     scheme_kind scheme;
     edbc_mode edbc;
+    volume_correction_kind volume_correction;
     double eta_threshold;
     eta_control_kind eta_control;
     bool les;
@@ -85,6 +95,7 @@ void config_write(const config *cfg, FILE *out);
 const char *config_scheme_name(scheme_kind s);
 const char *config_motion_name(motion_kind m);
 const char *config_edbc_name(edbc_mode e);
+const char *config_volume_correction_name(volume_correction_kind v);
 const char *config_eta_control_name(eta_control_kind e);
 const char *config_wall_name(wall_kind w);
 const char *config_liquid_shape_name(liquid_shape_kind s);

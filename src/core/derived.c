@@ -187,6 +187,9 @@ void derived_print(const config *cfg, const derived *dv, FILE *out)
     const char *per = cfg->dim == 2 ? " (per unit width)" : "";
     fprintf(out, "dim              %d\n", cfg->dim);
     fprintf(out, "scheme           %s\n", config_scheme_name(cfg->scheme));
+    fprintf(out, "volume controls  edbc = %s, eta_control = %s, volume_correction = %s\n",
+            config_edbc_name(cfg->edbc), config_eta_control_name(cfg->eta_control),
+            config_volume_correction_name(cfg->volume_correction));
     fprintf(out, "dr               %.6g m (N = %d)\n", dv->dr, cfg->resolution);
     fprintf(out, "h                %.6g m (h/dr = %g, support 2h = %.6g m)\n", dv->h,
             cfg->h_over_dr, 2.0 * dv->h);

@@ -14,6 +14,7 @@ static int double_arrays(particles *p, double ***out)
         out[n++] = &p->u_wall[d];
         out[n++] = &p->grad_rho[d];
         out[n++] = &p->shift[d];
+        out[n++] = &p->correction[d];
         out[n++] = &p->normal[d];
         out[n++] = &p->st_force[d];
     }
@@ -28,13 +29,14 @@ static int double_arrays(particles *p, double ***out)
     out[n++] = &p->normal_raw;
     out[n++] = &p->kernel_sum;
     out[n++] = &p->gamma;
+    out[n++] = &p->volume_mismatch;
     out[n++] = &p->diff_m;
     out[n++] = &p->interface;
     out[n++] = &p->curvature;
     return n;
 }
 
-#define MAX_ARRAYS (7 * DIM + 14)
+#define MAX_ARRAYS (8 * DIM + 15)
 
 static int grow(void **ptr, size_t count, size_t size)
 {
@@ -83,6 +85,16 @@ void particles_free(particles *p)
     free(p->is_free);
     free(p->surface_ref);
     memset(p, 0, sizeof *p);
+}
+
+size_t particles_bytes_per_slot(void)
+{
+    particles p;
+    double **arrays[MAX_ARRAYS];
+    int n = double_arrays(&p, arrays);
+    /* the doubles, then id, ghost_source, ghost_walls, surface, is_free, surface_ref */
+    return (size_t)n * sizeof(double) + sizeof(int64_t) + sizeof(int32_t) + 3 * sizeof(uint8_t) +
+           sizeof(int32_t);
 }
 
 static void permute(double *a, const size_t *order, size_t n, double *scratch)

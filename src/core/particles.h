@@ -19,21 +19,25 @@ typedef struct {
     double *rho, *p, *m, *vol; /* density, pressure (EOS), mass, SPH volume m/rho */
 
     /* per-step fields, frozen over the RK stages (sec. 2.4); ghosts copy their source's */
-    double *grad_rho[DIM]; /* renormalized density gradient <grad rho>^L */
-    double *nu_t;          /* Smagorinsky eddy viscosity with van Driest damping, m^2/s */
-    double *nu_delta;      /* diffusion coefficient nu^delta of Eq. (5), m^2/s */
-    double *lambda;        /* smallest eigenvalue of L, Eq. (10) (fluid) */
-    double *normal[DIM];   /* unit normal -L^-1 sum grad W V, out of the fluid (theory §4) */
-    double *normal_raw;    /* |L^-1 sum grad W V| before normalising */
-    double *kernel_sum;    /* sum_j W_ij, self included: 1 / geometric volume, Eq. (11) */
-    double *gamma;         /* Gamma_i = sum_j W_ij V_j, self included, Eq. (A.2) */
-    uint8_t *surface;      /* 0 interior, 1 in S_F, 2 free surface (Marrone et al. 2010) */
-    uint8_t *is_free;      /* the free-surface test alone, read while `surface` is written */
-    int32_t *surface_ref;  /* in S_F: the free-surface particle whose normal applies (itself,
-                              or the nearest one); -1 elsewhere */
-    double *diff_m;        /* mass diffusion D^m of Eq. (5) (fluid) */
-    double *shift[DIM];    /* shifting velocity delta-u, Eq. (7) (zero until shifting exists) */
-    double *diff_rho;      /* density diffusion D^rho of Eq. (5) (fluid) */
+    double *grad_rho[DIM];   /* renormalized density gradient <grad rho>^L */
+    double *nu_t;            /* Smagorinsky eddy viscosity with van Driest damping, m^2/s */
+    double *nu_delta;        /* diffusion coefficient nu^delta of Eq. (5), m^2/s */
+    double *lambda;          /* smallest eigenvalue of L, Eq. (10) (fluid) */
+    double *normal[DIM];     /* unit normal -L^-1 sum grad W V, out of the fluid (theory §4) */
+    double *normal_raw;      /* |L^-1 sum grad W V| before normalising */
+    double *kernel_sum;      /* sum_j W_ij, self included: 1 / geometric volume, Eq. (11) */
+    double *gamma;           /* Gamma_i = sum_j W_ij V_j, self included, Eq. (A.2) */
+    double *volume_mismatch; /* e_i = V_i sum_j W_ij / kappa - 1: SPH over geometric volume,
+                                with the geometric correction only (volume_correction.h) */
+    uint8_t *surface;        /* 0 interior, 1 in S_F, 2 free surface (Marrone et al. 2010) */
+    uint8_t *is_free;        /* the free-surface test alone, read while `surface` is written */
+    int32_t *surface_ref;    /* in S_F: the free-surface particle whose normal applies (itself,
+                                or the nearest one); -1 elsewhere */
+    double *diff_m;          /* mass diffusion D^m of Eq. (5) (fluid) */
+    double *shift[DIM];      /* shifting velocity delta-u, Eq. (7) (zero until shifting exists) */
+    double *correction[DIM]; /* the geometric volume correction's velocity (zero without it;
+                                ghosts: mirrored), scheme/volume_correction.h */
+    double *diff_rho;        /* density diffusion D^rho of Eq. (5) (fluid) */
     /* surface tension, with fluid.surface_tension > 0 only (scheme/surface_tension.h) */
     double *interface;     /* interface function delta_Sigma, 1/m (ghosts: their source's) */
     double *curvature;     /* kappa, 1/m (fluid) */
@@ -44,16 +48,19 @@ typedef struct {
     uint8_t *ghost_walls;  /* bit 2d: mirrored across the low wall of axis d; bit 2d+1: high */
 } particles;
 
-#define particles_init          DIM_NAME(particles_init)
-#define particles_free          DIM_NAME(particles_free)
-#define particles_reserve       DIM_NAME(particles_reserve)
-#define particles_permute_fluid DIM_NAME(particles_permute_fluid)
+#define particles_init           DIM_NAME(particles_init)
+#define particles_free           DIM_NAME(particles_free)
+#define particles_reserve        DIM_NAME(particles_reserve)
+#define particles_permute_fluid  DIM_NAME(particles_permute_fluid)
+#define particles_bytes_per_slot DIM_NAME(particles_bytes_per_slot)
 
 /* Allocates room for `capacity` particles (fluid + ghosts); all counts 0. Returns 0 or -1. */
 int particles_init(particles *p, size_t capacity);
 void particles_free(particles *p);
 /* Grows the store to hold at least `capacity` particles, keeping the contents. */
 int particles_reserve(particles *p, size_t capacity);
+/* The bytes one particle slot takes in the store (every array of it). */
+size_t particles_bytes_per_slot(void);
 /* Reorders the persistent fluid state (id, x, u, rho, m) so that new slot k holds old
  * particle order[k]; scratch needs n_fluid doubles. */
 void particles_permute_fluid(particles *p, const size_t *order, double *scratch);

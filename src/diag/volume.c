@@ -3,6 +3,7 @@
 #include "core/reduce.h"
 #include "diag/freesurface.h"
 #include "diag/raster.h"
+#include "scheme/pair.h"
 
 typedef enum { MEASURE_KERNEL, MEASURE_GAMMA, MEASURE_LAMBDA } measure;
 
@@ -35,6 +36,41 @@ void volume_compute(const particles *p, double cell_volume, double *scratch, vol
 #pragma omp parallel for schedule(static) reduction(+ : n)
     for (size_t i = 0; i < p->n_fluid; i++) n += p->surface[i] == SURFACE_FREE;
     out->n_free_surface = n;
+}
+
+/* Eq. (13) of particle i with the velocity field v: Vgeo_i^2 sum_j v_ji . grad_i W_ij */
+static double geometric_volume_rate(const kernel *k, const particles *p, const neighbour_list *nl,
+                                    double *const v[DIM], size_t i)
+{
+    vec xi = vec_load(p->x, i), vi = vec_load(v, i);
+    double sum = 0.0;
+    const int32_t *row = neighbour_row(nl, i);
+    for (int32_t n = 0; n < nl->count[i]; n++) {
+        pair pr;
+        if (!pair_of(k, p->x, xi, row, n, &pr)) continue;
+        sum += vec_dot(vec_sub(vec_load(v, pr.j), vi), pr.r_ji) * pr.f;
+    }
+    double vgeo = 1.0 / p->kernel_sum[i];
+    return vgeo * vgeo * sum;
+}
+
+static double interior_rate(const kernel *k, const particles *p, const neighbour_list *nl,
+                            double *const v[DIM], double v0, double *scratch)
+{
+#pragma omp parallel for schedule(static)
+    for (size_t i = 0; i < p->n_fluid; i++)
+        scratch[i] =
+            p->surface[i] == SURFACE_INTERIOR ? geometric_volume_rate(k, p, nl, v, i) : 0.0;
+    return reduce_sum(scratch, p->n_fluid) / v0;
+}
+
+void volume_rate(const kernel *k, const particles *p, const neighbour_list *nl, double cell_volume,
+                 double *scratch, volume_rates *out)
+{
+    double v0 = (double)p->n_fluid * cell_volume;
+    out->u = interior_rate(k, p, nl, p->u, v0, scratch);
+    out->shift = interior_rate(k, p, nl, p->shift, v0, scratch);
+    out->correction = interior_rate(k, p, nl, p->correction, v0, scratch);
 }
 
 int volume_graphical(const particles *p, const double size[DIM], double dr, double v0,

@@ -3,6 +3,8 @@
 #ifndef VCSPH_VOLUME_H
 #define VCSPH_VOLUME_H
 
+#include "core/cells.h"
+#include "core/kernel.h"
 #include "core/particles.h"
 #include "diag/freesurface.h"
 
@@ -16,6 +18,20 @@ typedef struct {
 /* From this step's geometry (kernel_sum, gamma, lambda, surface); `cell_volume` is dr^n and
  * V0 = n_fluid dr^n. `scratch` holds n_fluid doubles. Sums in the fixed order of reduce. */
 void volume_compute(const particles *p, double cell_volume, double *scratch, volume_errors *out);
+
+#define volume_rate DIM_NAME(volume_rate)
+
+/* The rate of eps_V^(1) carried by the particle motion, split by velocity: Eq. (13),
+ * dVgeo_i/dt = Vgeo_i^2 sum_j v_ji . grad_i W_ij, summed over the particles off S_F and
+ * divided by V0 = n_fluid dr^n, with v = u, the shifting velocity du and the volume
+ * correction's dv in turn, 1/s. Needs this step's geometry, du, dv and refreshed ghosts. The
+ * changes of S_F membership (a particle entering S_F counts dr^n from then on) are in none.
+ * `scratch` holds n_fluid doubles. */
+typedef struct {
+    double u, shift, correction;
+} volume_rates;
+void volume_rate(const kernel *k, const particles *p, const neighbour_list *nl, double cell_volume,
+                 double *scratch, volume_rates *out);
 
 #define volume_graphical DIM_NAME(volume_graphical)
 

@@ -5,6 +5,7 @@
 #include "scheme/control.h"
 #include "scheme/fields.h"
 #include "scheme/solver.h"
+#include "scheme/volume_correction.h"
 
 #include <string.h>
 
@@ -129,6 +130,7 @@ int solver_prepare(solver *s, double t_stop)
     if (s->n_edbc > 0) /* the ghosts of corrected particles carry the corrected state */
         tank_refresh_ghosts(&s->tank, &s->p, g_eff, s->pp.rho0, s->pp.c0);
     if (s->pp.shifting) fields_shifting(&s->pp, &s->p, &s->nl);
+    if (s->pp.volume_correction) volume_correction_apply(&s->pp, &s->p, &s->nl);
     if (tank_bounce_back(&s->tank, &s->p, s->dv.dr, dt) > 0) /* ghosts of reversed velocities */
         tank_refresh_ghosts(&s->tank, &s->p, g_eff, s->pp.rho0, s->pp.c0);
     fields_frozen_terms(&s->pp, &s->p, &s->nl, g_eff, s->eta_control.eta > 0.0, s->dt);

@@ -4,6 +4,7 @@
 #include "physics/continuity.h"
 #include "physics/pressure.h"
 #include "physics/viscosity.h"
+#include "physics/volume_correction.h"
 #include "scheme/pair.h"
 
 /* One particle's sums. `les`, `ale` and `variable_mass` are compile-time constants at each
@@ -46,13 +47,19 @@ static inline void rhs_particle(const physics_params *pp, const particles *p,
         vec uw_ji = vec_sub(vec_load(p->u_wall, j), uwi);
         force = vec_add(force, viscosity_pair(mu_eff, uw_ji, pr.r_ji, pr.r2, pr.f, vj));
     }
+    vec transport = vec_add(ui, dui);
+    if (pp->volume_correction) { /* the particle moves through the density field */
+        vec dvi = vec_load(p->correction, i);
+        transport = vec_add(transport, dvi);
+        drho += volume_correction_resampling(dvi, vec_load(p->grad_rho, i));
+    }
     out->drho[i] = drho + p->diff_rho[i];
     vec acc = vec_axpy(g_eff, 1.0 / rhoi, force);
     /* the surface-tension force on the particle, frozen over the step: m a sums it exactly */
     if (pp->surface_tension) acc = vec_axpy(acc, 1.0 / p->m[i], vec_load(p->st_force, i));
     for (int d = 0; d < DIM; d++) {
         out->du[d][i] = acc.c[d];
-        out->dx[d][i] = ui.c[d] + dui.c[d];
+        out->dx[d][i] = transport.c[d];
     }
     /* Eq. (3): dm/dt = eta [div(rho du) V_i + D^m] (fluid pairs only: the total is exact) */
     out->dm[i] = variable_mass ? eta * (mass_flux + p->diff_m[i]) : 0.0;

@@ -114,8 +114,7 @@ static void surface_curvature(const surface_tension_params *st, const kernel *k,
         }
         kappa[i] = curvature_value(&sums, DIM, st->dr);
     }
-    for (size_t g = p->n_fluid; g < p->n_total; g++)
-        kappa[g] = kappa[p->ghost_source[g - p->n_fluid]];
+    tank_copy_to_ghosts(p, kappa);
 }
 
 /* kappa of S_F: the Shepard average of the free-surface curvature within the support, which

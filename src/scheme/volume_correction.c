@@ -1,0 +1,93 @@
+/* volume_correction: the mismatch field e and the correction velocity. */
+#include "scheme/volume_correction.h"
+#include "boundary/tank.h"
+#include "diag/freesurface.h"
+#include "physics/volume_correction.h"
+#include "scheme/fields.h"
+#include "scheme/pair.h"
+
+#include <math.h>
+
+double volume_correction_lattice_sum(const kernel *k, double dr)
+{
+    int reach = (int)ceil(2.0 * k->h / dr);
+    int reach_z = DIM == 3 ? reach : 0;
+    double sum = 0.0;
+    for (int a = -reach; a <= reach; a++)
+        for (int b = -reach; b <= reach; b++)
+            for (int c = -reach_z; c <= reach_z; c++)
+                sum += kernel_w(k, dr * sqrt((double)(a * a + b * b + c * c)));
+    return sum * pow(dr, DIM);
+}
+
+/* e off S_F, where the kernel support is whole (Eq. 12 measures only there). */
+static void interior_mismatch(double lattice_sum, particles *p)
+{
+#pragma omp parallel for schedule(static)
+    for (size_t i = 0; i < p->n_fluid; i++)
+        p->volume_mismatch[i] = p->surface[i] == SURFACE_INTERIOR
+                                    ? volume_mismatch(p->vol[i], p->kernel_sum[i], lattice_sum)
+                                    : 0.0;
+}
+
+/* e in S_F: the Shepard average of the interior fluid neighbours' e. The band moves with the
+ * liquid below it, and the free surface (no interior particle within 2h) keeps e = 0, the
+ * condition that lets the surface, not the band, take up the change of volume. Reads only
+ * interior entries and writes only the others, so the loop has no race. */
+static void surface_band_mismatch(const kernel *k, particles *p, const neighbour_list *nl)
+{
+#pragma omp parallel for schedule(static)
+    for (size_t i = 0; i < p->n_fluid; i++) {
+        if (p->surface[i] == SURFACE_INTERIOR) continue;
+        vec xi = vec_load(p->x, i);
+        double sum = 0.0, weight = 0.0;
+        const int32_t *row = neighbour_row(nl, i);
+        for (int32_t n = 0; n < nl->count[i]; n++) {
+            pair pr;
+            if (!pair_of(k, p->x, xi, row, n, &pr)) continue;
+            size_t j = pr.j;
+            if (j >= p->n_fluid || p->surface[j] != SURFACE_INTERIOR) continue;
+            double w = kernel_w(k, pr.r) * p->vol[j];
+            sum += w * p->volume_mismatch[j];
+            weight += w;
+        }
+        p->volume_mismatch[i] = weight > 0.0 ? sum / weight : 0.0;
+    }
+}
+
+static inline vec limit_speed(vec v, double cap)
+{
+    double norm = vec_norm(v);
+    return norm > cap ? vec_scale(v, cap / norm) : v;
+}
+
+static void correction_velocity(const physics_params *pp, particles *p, const neighbour_list *nl)
+{
+    const kernel *k = &pp->k;
+    double scale = -k->h * pp->shift_u_max, cap = 0.5 * pp->shift_u_max;
+#pragma omp parallel for schedule(static)
+    for (size_t i = 0; i < p->n_fluid; i++) {
+        vec du = vec_zero();
+        if (p->lambda[i] >= SHIFTING_LAMBDA_MIN) {
+            vec xi = vec_load(p->x, i), sum = vec_zero();
+            double ei = p->volume_mismatch[i];
+            const int32_t *row = neighbour_row(nl, i);
+            for (int32_t n = 0; n < nl->count[i]; n++) {
+                pair pr;
+                if (!pair_of(k, p->x, xi, row, n, &pr)) continue;
+                sum = vec_add(sum, volume_correction_pair(ei, p->volume_mismatch[pr.j], pr.r_ji,
+                                                          pr.f, p->vol[pr.j]));
+            }
+            du = limit_speed(vec_scale(sum, scale), cap);
+        }
+        vec_store(p->correction, i, du);
+    }
+}
+
+void volume_correction_apply(const physics_params *pp, particles *p, const neighbour_list *nl)
+{
+    interior_mismatch(pp->lattice_kernel_sum, p);
+    surface_band_mismatch(&pp->k, p, nl);
+    tank_copy_to_ghosts(p, p->volume_mismatch);
+    correction_velocity(pp, p, nl);
+}

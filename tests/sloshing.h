@@ -1,0 +1,41 @@
+/* sloshing: the period of a free sloshing oscillation from a time series, for the tests that
+ * compare it with linear theory or between runs. Include after <cmocka.h> and "table.h". */
+#ifndef VCSPH_TEST_SLOSHING_H
+#define VCSPH_TEST_SLOSHING_H
+
+#include <math.h>
+
+/* Free sloshing in the INM tank (1 m long, H = 0.35 m, 2D, delta-SPH, N = 16): one period of
+ * sway, A = 1 cm, at the first natural period excites the first mode, which then rings. */
+static const char free_sloshing_case[] = "[case]\nname = free-sloshing\ndim = 2\nt_end = 6.6\n"
+                                         "[tank]\nlength = 1.0\nheight = 1.0\n"
+                                         "[liquid]\nheight = 0.35\n"
+                                         "[motion]\ntype = sway\namplitude = 0.01\n"
+                                         "period = 1.2651\nduration = 1.2651\n"
+                                         "[model]\nscheme = delta\n"
+                                         "[numerics]\nresolution = 16\nsound_speed = 20\n"
+                                         "[output]\ntimeseries_every = 0.01\n";
+
+/* The mean spacing of the upward crossings of com_x through its mean, over the rows after
+ * `after` (s, once the forcing has stopped); the number of whole cycles in *cycles. */
+static inline double com_x_period(const table *t, double after, int *cycles)
+{
+    const double *time = table_column(t, "t"), *com_x = table_column(t, "com_x");
+    double mean = 0.0, first = NAN, last = NAN;
+    size_t count = 0;
+    for (size_t r = 0; r < t->n_rows; r++)
+        if (time[r] > after) mean += com_x[r], count++;
+    mean /= (double)count;
+    int crossings = 0;
+    for (size_t r = 1; r < t->n_rows; r++) {
+        double a = com_x[r - 1] - mean, b = com_x[r] - mean;
+        if (time[r - 1] < after || !(a < 0.0 && b >= 0.0)) continue;
+        double tc = time[r - 1] + (time[r] - time[r - 1]) * (-a) / (b - a);
+        if (crossings++ == 0) first = tc;
+        last = tc;
+    }
+    *cycles = crossings - 1;
+    return (last - first) / (crossings - 1);
+}
+
+#endif
