@@ -2,6 +2,7 @@
 #include "scheme/volume_correction.h"
 #include "boundary/tank.h"
 #include "diag/freesurface.h"
+#include "physics/shifting.h"
 #include "physics/volume_correction.h"
 #include "scheme/fields.h"
 #include "scheme/pair.h"
@@ -58,16 +59,10 @@ static void surface_band_mismatch(const kernel *k, particles *p, const neighbour
     }
 }
 
-static inline vec limit_speed(vec v, double cap)
-{
-    double norm = vec_norm(v);
-    return norm > cap ? vec_scale(v, cap / norm) : v;
-}
-
 static void correction_velocity(const physics_params *pp, particles *p, const neighbour_list *nl)
 {
     const kernel *k = &pp->k;
-    double scale = -k->h * pp->shift_u_max, cap = 0.5 * pp->shift_u_max;
+    double scale = -k->h * pp->shift_u_max;
 #pragma omp parallel for schedule(static)
     for (size_t i = 0; i < p->n_fluid; i++) {
         vec du = vec_zero();
@@ -81,7 +76,8 @@ static void correction_velocity(const physics_params *pp, particles *p, const ne
                 sum = vec_add(sum, volume_correction_pair(ei, p->volume_mismatch[pr.j], pr.r_ji,
                                                           pr.f, p->vol[pr.j]));
             }
-            du = limit_speed(vec_scale(sum, scale), cap);
+            /* at most U_max / 2, Eq. (7)'s cap (no relative-speed bound here) */
+            du = shifting_limit(vec_scale(sum, scale), INFINITY, pp->shift_u_max);
         }
         vec_store(p->correction, i, du);
     }
