@@ -1,7 +1,8 @@
 # runs.sh: what the validation scripts share, sourced by them (not run on its own).
 #   vcsph_run DIR [vcsph run arguments...]   runs $VCSPH (default build/vcsph) into DIR with
 #       $threads threads: the terminal output goes to DIR/run.txt, the exit status to DIR/exit
-#       (3: breakdown), "wall user system" seconds to DIR/time.txt
+#       (3: breakdown), "wall user system" seconds to DIR/time.txt; THREADS, when set,
+#       overrides $threads (to run a queue on one core while the other stays free)
 #   for_each_run JOBS FUNCTION RUN...        calls FUNCTION with each RUN's words, at most
 #       JOBS at a time, and says how long they took
 #   us_per_particle_step DIR                 the run's cost from DIR/log.txt, or -
@@ -10,7 +11,7 @@ vcsph_run() {
   shift
   mkdir -p "$dir"
   local TIMEFORMAT='%R %U %S'
-  { time OMP_NUM_THREADS=$threads "${VCSPH:-build/vcsph}" run "$@" -o "$dir" --quiet \
+  { time OMP_NUM_THREADS=${THREADS:-$threads} "${VCSPH:-build/vcsph}" run "$@" -o "$dir" --quiet \
       >"$dir/run.txt" 2>&1 || status=$?; } 2>"$dir/time.txt"
   echo $status >"$dir/exit"
   return 0
