@@ -1,8 +1,12 @@
 /* Surface tension off (fluid.surface_tension = 0, the default) changes nothing: two short
- * delta-plus-ALE runs (2D SAP, 3D sway) end in exactly the state that the solver reached
- * before surface tension existed (commit 833509b), bit for bit. The references in
- * tests/data/sigma_off/ were written by this same file built against that commit
- * (VCSPH_WRITE_REFERENCE=1); each line is one particle, in C's exact %a notation. */
+ * delta-plus-ALE runs (2D SAP, 3D sway) end in exactly the state that the solver reaches
+ * without the surface-tension code, bit for bit. The references in tests/data/sigma_off/
+ * were written by this same file (VCSPH_WRITE_REFERENCE=1) built against commit 833509b,
+ * before surface tension existed, and written again when the shifting in S_F took the
+ * surface's normal (issue 18): built against the commit before that change with only the
+ * free-surface files of the change applied (src/diag/freesurface.*, src/scheme/fields.c,
+ * src/core/particles.*), so that the surface-tension code of the change was not in it. Each
+ * line is one particle, in C's exact %a notation. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>

@@ -22,7 +22,7 @@
 static const char timeseries_header[] =
     "t,step,dt,n_fluid,eps_v1,eps_v2,eps_v3,eps_gm,eps_sph,mass_err,eta,edbc,n_edbc,"
     "n_free_surface,ekin,epot,eint,work_in,ediss,com_x,com_y,com_z,xmin,xmax,ymax,umax,"
-    "rho_min,rho_max,esurf,work_st,deps_u,deps_du,deps_corr";
+    "rho_min,rho_max,esurf,work_st,deps_u,deps_du,deps_corr,angmom_x,angmom_y,angmom_z";
 
 static int make_dir(const char *path)
 {
@@ -149,6 +149,7 @@ void run_write_series_row(run *r, int with_geometry)
     } else {
         for (int k = 0; k < 3; k++) csv_put_empty(c);
     }
+    for (int d = 0; d < 3; d++) csv_put(c, dg.angmom[d]);
     csv_end_row(c);
 
     /* Eq. (6): the sound speed assumes speeds below c0/10 */

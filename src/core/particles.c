@@ -57,8 +57,7 @@ int particles_reserve(particles *p, size_t capacity)
         grow((void **)&p->ghost_source, capacity, sizeof(int32_t)) ||
         grow((void **)&p->ghost_walls, capacity, sizeof(uint8_t)) ||
         grow((void **)&p->surface, capacity, sizeof(uint8_t)) ||
-        grow((void **)&p->is_free, capacity, sizeof(uint8_t)) ||
-        grow((void **)&p->surface_ref, capacity, sizeof(int32_t)))
+        grow((void **)&p->is_free, capacity, sizeof(uint8_t)))
         return -1;
     /* new slots start as zeros: shifting and lambda are read before anything writes them */
     for (int k = 0; k < n; k++)
@@ -83,7 +82,6 @@ void particles_free(particles *p)
     free(p->ghost_walls);
     free(p->surface);
     free(p->is_free);
-    free(p->surface_ref);
     memset(p, 0, sizeof *p);
 }
 
@@ -92,9 +90,8 @@ size_t particles_bytes_per_slot(void)
     particles p;
     double **arrays[MAX_ARRAYS];
     int n = double_arrays(&p, arrays);
-    /* the doubles, then id, ghost_source, ghost_walls, surface, is_free, surface_ref */
-    return (size_t)n * sizeof(double) + sizeof(int64_t) + sizeof(int32_t) + 3 * sizeof(uint8_t) +
-           sizeof(int32_t);
+    /* the doubles, then id, ghost_source, ghost_walls, surface, is_free */
+    return (size_t)n * sizeof(double) + sizeof(int64_t) + sizeof(int32_t) + 3 * sizeof(uint8_t);
 }
 
 static void permute(double *a, const size_t *order, size_t n, double *scratch)

@@ -23,7 +23,9 @@ typedef struct {
     double *nu_t;            /* Smagorinsky eddy viscosity with van Driest damping, m^2/s */
     double *nu_delta;        /* diffusion coefficient nu^delta of Eq. (5), m^2/s */
     double *lambda;          /* smallest eigenvalue of L, Eq. (10) (fluid) */
-    double *normal[DIM];     /* unit normal -L^-1 sum grad W V, out of the fluid (theory §4) */
+    double *normal[DIM];     /* unit normal -L^-1 sum grad W V, out of the fluid (theory §4);
+                                in S_F below the free surface, the surface's: the average of
+                                the free-surface neighbours' normals */
     double *normal_raw;      /* |L^-1 sum grad W V| before normalising */
     double *kernel_sum;      /* sum_j W_ij, self included: 1 / geometric volume, Eq. (11) */
     double *gamma;           /* Gamma_i = sum_j W_ij V_j, self included, Eq. (A.2) */
@@ -31,8 +33,6 @@ typedef struct {
                                 with the geometric correction only (volume_correction.h) */
     uint8_t *surface;        /* 0 interior, 1 in S_F, 2 free surface (Marrone et al. 2010) */
     uint8_t *is_free;        /* the free-surface test alone, read while `surface` is written */
-    int32_t *surface_ref;    /* in S_F: the free-surface particle whose normal applies (itself,
-                                or the nearest one); -1 elsewhere */
     double *diff_m;          /* mass diffusion D^m of Eq. (5) (fluid) */
     double *shift[DIM];      /* shifting velocity delta-u, Eq. (7) (zero until shifting exists) */
     double *correction[DIM]; /* the geometric volume correction's velocity (zero without it;
@@ -41,7 +41,8 @@ typedef struct {
     /* surface tension, with fluid.surface_tension > 0 only (scheme/surface_tension.h) */
     double *interface;     /* interface function delta_Sigma, 1/m (ghosts: their source's) */
     double *curvature;     /* kappa, 1/m (fluid) */
-    double *st_force[DIM]; /* F^st V_i, the frozen surface-tension force on the particle, N */
+    double *st_force[DIM]; /* F^st V_i, the surface-tension force on the particle at the
+                              current RK stage, N */
 
     /* ghosts only, indexed g - n_fluid */
     int32_t *ghost_source; /* fluid index it mirrors */

@@ -2,11 +2,32 @@
 #include "diag/energy.h"
 #include "core/reduce.h"
 #include "physics/eos.h"
+#include "physics/moment.h"
 
-typedef enum { TERM_EKIN, TERM_EPOT, TERM_EINT, TERM_MASS, TERM_VOLUME, TERM_MOMENT } term;
+typedef enum {
+    TERM_EKIN,
+    TERM_EPOT,
+    TERM_EINT,
+    TERM_MASS,
+    TERM_VOLUME,
+    TERM_MOMENT,
+    TERM_ANGULAR
+} term;
 
-/* One particle's share of a global sum; `axis` for the first moments m x_d. */
-static inline double term_value(const solver *s, term t, int axis, size_t i)
+/* m (x - centre) x u, component `axis` (2D: z alone) */
+static inline double angular_momentum(const particles *p, const double centre[3], int axis,
+                                      size_t i)
+{
+    vec r = vec_load(p->x, i);
+    for (int d = 0; d < DIM; d++) r.c[d] -= centre[d];
+    double l[3] = {0.0, 0.0, 0.0};
+    moment_add(l, p->m[i], r, vec_load(p->u, i));
+    return l[axis];
+}
+
+/* One particle's share of a global sum; `axis` for the first moments m x_d and the
+ * components of the angular momentum about `centre`. */
+static inline double term_value(const solver *s, term t, int axis, const double centre[3], size_t i)
 {
     const particles *p = &s->p;
     switch (t) {
@@ -16,15 +37,16 @@ static inline double term_value(const solver *s, term t, int axis, size_t i)
     case TERM_MASS: return p->m[i];
     case TERM_VOLUME: return p->m[i] / p->rho[i];
     case TERM_MOMENT: return p->m[i] * p->x[axis][i];
+    case TERM_ANGULAR: return angular_momentum(p, centre, axis, i);
     }
     return 0.0;
 }
 
 /* The terms go to scratch, then one sum in the fixed order of the reduce module. */
-static double sum_term(solver *s, term t, int axis)
+static double sum_term(solver *s, term t, int axis, const double centre[3])
 {
 #pragma omp parallel for schedule(static)
-    for (size_t i = 0; i < s->p.n_fluid; i++) s->scratch[i] = term_value(s, t, axis, i);
+    for (size_t i = 0; i < s->p.n_fluid; i++) s->scratch[i] = term_value(s, t, axis, centre, i);
     return reduce_sum(s->scratch, s->p.n_fluid);
 }
 
@@ -32,13 +54,15 @@ void diagnostics_compute(solver *s, diagnostics *out)
 {
     const particles *p = &s->p;
     size_t n = p->n_fluid;
-    out->ekin = sum_term(s, TERM_EKIN, 0);
-    out->epot = sum_term(s, TERM_EPOT, 0);
-    out->eint = sum_term(s, TERM_EINT, 0);
-    out->mass = sum_term(s, TERM_MASS, 0);
-    out->vol_sph = sum_term(s, TERM_VOLUME, 0);
+    out->ekin = sum_term(s, TERM_EKIN, 0, NULL);
+    out->epot = sum_term(s, TERM_EPOT, 0, NULL);
+    out->eint = sum_term(s, TERM_EINT, 0, NULL);
+    out->mass = sum_term(s, TERM_MASS, 0, NULL);
+    out->vol_sph = sum_term(s, TERM_VOLUME, 0, NULL);
     for (int d = 0; d < 3; d++)
-        out->com[d] = d < DIM ? sum_term(s, TERM_MOMENT, d) / out->mass : 0.0;
+        out->com[d] = d < DIM ? sum_term(s, TERM_MOMENT, d, NULL) / out->mass : 0.0;
+    for (int a = 0; a < 3; a++) /* 2D: about z alone */
+        out->angmom[a] = DIM == 3 || a == 2 ? sum_term(s, TERM_ANGULAR, a, out->com) : 0.0;
     out->xmin = reduce_min(p->x[0], n);
     out->xmax = reduce_max(p->x[0], n);
     out->ymax = reduce_max(p->x[1], n);

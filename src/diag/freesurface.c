@@ -84,30 +84,30 @@ void freesurface_detect(const kernel *k, double dr, double normal_reference, par
         p->is_free[i] = (uint8_t)on_surface;
     }
     /* S_F: the free surface and every fluid particle within 2h of it (ghosts add nothing: a
-       mirror image is never closer than its source) */
+       mirror image is never closer than its source). Below the free surface, a particle of S_F
+       takes the normal of the surface above it, the kernel-weighted average of its
+       free-surface neighbours' normals: its own measures the holes of its neighbourhood, and
+       the nearest free-surface particle's would depend on the order of the neighbours at a tie
+       and break the mirror symmetries of the flow (theory §4). Only normals of the free
+       surface are read, and only the others' are written. */
 #pragma omp parallel for schedule(static)
     for (size_t i = 0; i < p->n_fluid; i++) {
-        vec xi = vec_load(p->x, i);
         if (p->is_free[i]) {
             p->surface[i] = SURFACE_FREE;
-            p->surface_ref[i] = (int32_t)i;
             continue;
         }
-        /* the nearest free-surface particle within the support, if any (its normal serves
-           the shifting of this particle, theory §4) */
-        double nearest = k->support2;
-        int32_t ref = -1;
+        vec xi = vec_load(p->x, i), sum = vec_zero();
+        int found = 0;
         const int32_t *row = neighbour_row(nl, i);
         for (int32_t m = 0; m < nl->count[i]; m++) {
-            size_t j = (size_t)row[m];
-            if (j >= p->n_fluid || !p->is_free[j]) continue;
-            double r2 = vec_norm2(vec_sub(vec_load(p->x, j), xi));
-            if (r2 < nearest) {
-                nearest = r2;
-                ref = (int32_t)j;
-            }
+            pair pr;
+            if (!pair_of(k, p->x, xi, row, m, &pr) || pr.j >= p->n_fluid || !p->is_free[pr.j])
+                continue;
+            found = 1;
+            sum = vec_axpy(sum, kernel_w(k, pr.r) * p->vol[pr.j], vec_load(p->normal, pr.j));
         }
-        p->surface[i] = ref >= 0 ? SURFACE_REGION : SURFACE_INTERIOR;
-        p->surface_ref[i] = ref;
+        p->surface[i] = found ? SURFACE_REGION : SURFACE_INTERIOR;
+        double length = vec_norm(sum);
+        if (found && length > 0.0) vec_store(p->normal, i, vec_scale(sum, 1.0 / length));
     }
 }

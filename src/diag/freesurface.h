@@ -18,6 +18,25 @@ enum { SURFACE_INTERIOR = 0, SURFACE_REGION = 1, SURFACE_FREE = 2 };
  * already "covered" with a 2 dr umbrella, 0.45 dr with 1.33 dr). */
 #define FREESURFACE_SCAN_OVER_DR 1.33
 
+/* The matrix that renormalises a particle's gradients: L^-1 where L is well conditioned
+ * (lambda above lambda_min), else the identity, the plain gradient of drops and jets
+ * (theory §2). */
+static inline mat renormalization(const mat *l, double lambda, double lambda_min)
+{
+    mat l_inv = mat_identity();
+    if (lambda > lambda_min) mat_inverse(l, &l_inv);
+    return l_inv;
+}
+
+/* The unit normal out of the fluid, -L^-1 sum grad W V normalised (theory §4), from
+ * grad_one = sum r_ji F V_j; *length gets |L^-1 sum grad W V|. */
+static inline vec outward_normal(const mat *l_inv, vec grad_one, double *length)
+{
+    vec normal = vec_scale(mat_mul_vec(l_inv, grad_one), -1.0);
+    *length = vec_norm(normal);
+    return *length > 0.0 ? vec_scale(normal, 1.0 / *length) : normal;
+}
+
 #define freesurface_flat_sums        DIM_NAME(freesurface_flat_sums)
 #define freesurface_detect           DIM_NAME(freesurface_detect)
 #define freesurface_reference_normal DIM_NAME(freesurface_reference_normal)

@@ -64,12 +64,8 @@ static void geometry_and_gradients(const physics_params *pp, const tank *t, part
         p->kernel_sum[i] = s.w + k->norm; /* self term W(0) */
         p->gamma[i] = s.wv + k->norm * p->vol[i];
         /* near-singular L (drops, jets): fall back to the plain gradient (theory §2) */
-        mat l_inv = mat_identity();
-        if (lambda > pp->lambda_renormalize) mat_inverse(&s.l, &l_inv);
-        vec normal = vec_scale(mat_mul_vec(&l_inv, s.grad_one), -1.0);
-        double normal_norm = vec_norm(normal);
-        p->normal_raw[i] = normal_norm;
-        vec_store(p->normal, i, normal_norm > 0.0 ? vec_scale(normal, 1.0 / normal_norm) : normal);
+        mat l_inv = renormalization(&s.l, lambda, pp->lambda_renormalize);
+        vec_store(p->normal, i, outward_normal(&l_inv, s.grad_one, &p->normal_raw[i]));
         vec_store(p->grad_rho, i, mat_mul_vec(&l_inv, s.drho));
         double g[DIM][DIM];
         for (int a = 0; a < DIM; a++) {
@@ -116,7 +112,7 @@ void fields_shifting(const physics_params *pp, particles *p, const neighbour_lis
         if (p->lambda[i] < SHIFTING_LAMBDA_MIN)
             du = vec_zero();
         else if (p->surface[i] != SURFACE_INTERIOR)
-            du = shifting_tangential(du, vec_load(p->normal, (size_t)p->surface_ref[i]));
+            du = shifting_tangential(du, vec_load(p->normal, i)); /* the surface's */
         vec_store(p->shift, i, du);
     }
 }

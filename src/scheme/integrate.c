@@ -1,4 +1,5 @@
-/* integrate: one time step, Eq. (8) and RK4 with frozen per-step terms (sec. 2.4). */
+/* integrate: one time step, Eq. (8) and RK4 with frozen per-step terms (sec. 2.4); the
+ * surface-tension force is taken again at every stage (scheme/surface_tension.h). */
 #include "boundary/tank.h"
 #include "core/reduce.h"
 #include "diag/volume.h"
@@ -134,8 +135,10 @@ int solver_prepare(solver *s, double t_stop)
     if (tank_bounce_back(&s->tank, &s->p, s->dv.dr, dt) > 0) /* ghosts of reversed velocities */
         tank_refresh_ghosts(&s->tank, &s->p, g_eff, s->pp.rho0, s->pp.c0);
     fields_frozen_terms(&s->pp, &s->p, &s->nl, g_eff, s->eta_control.eta > 0.0, s->dt);
-    if (s->pp.surface_tension && surface_tension_compute(&s->st, &s->pp.k, &s->p, &s->nl))
-        return -1;
+    if (s->pp.surface_tension) { /* the force of stage 0, and room for the other stages' */
+        if (surface_tension_reserve(&s->st_work, s->p.n_total)) return -1;
+        surface_tension_compute(&s->st, &s->pp.k, &s->p, &s->nl, &s->st_work);
+    }
     return 0;
 }
 
@@ -159,6 +162,8 @@ void solver_advance(solver *s, double t_stop)
                 for (int v = 0; v < RK_VARS; v++) y[v][i] = s->y0[v][i] + c * rate[v][i];
             solver_update_eos(s);
             tank_refresh_ghosts(&s->tank, p, g_eff, s->pp.rho0, s->pp.c0);
+            if (s->pp.surface_tension) /* from the stage's positions (surface_tension.h) */
+                surface_tension_compute(&s->st, &s->pp.k, p, &s->nl, &s->st_work);
         }
         rhs_compute(&s->pp, p, &s->nl, g_eff, s->eta_control.eta, &s->k);
         if (stage == 0) s->max_acc = max_acceleration(s);

@@ -24,7 +24,7 @@ typedef struct {
     double delta_c0_h;         /* delta c0 h of D^m, Eq. (5) */
     bool les;                  /* Smagorinsky eddy viscosity */
     bool van_driest;           /* damp it near no-slip walls */
-    bool surface_tension;      /* sigma > 0: the frozen force p->st_force joins the momentum */
+    bool surface_tension;      /* sigma > 0: the force p->st_force joins the momentum */
 } physics_params;
 
 #endif

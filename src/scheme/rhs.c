@@ -55,7 +55,7 @@ static inline void rhs_particle(const physics_params *pp, const particles *p,
     }
     out->drho[i] = drho + p->diff_rho[i];
     vec acc = vec_axpy(g_eff, 1.0 / rhoi, force);
-    /* the surface-tension force on the particle, frozen over the step: m a sums it exactly */
+    /* the surface-tension force on the particle at this stage: m a sums it exactly */
     if (pp->surface_tension) acc = vec_axpy(acc, 1.0 / p->m[i], vec_load(p->st_force, i));
     for (int d = 0; d < DIM; d++) {
         out->du[d][i] = acc.c[d];

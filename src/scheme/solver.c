@@ -35,7 +35,7 @@ static void physics_setup(solver *s)
     pp->les = cfg->les;
     pp->van_driest = cfg->les && cfg->wall == WALL_NO_SLIP;
     pp->surface_tension = cfg->surface_tension > 0.0;
-    s->st = surface_tension_setup(&pp->k, pp->dr, cfg->surface_tension);
+    s->st = surface_tension_setup(&pp->k, pp->dr, cfg->surface_tension, pp->lambda_renormalize);
 }
 
 static int alloc_work(solver *s)
@@ -100,6 +100,7 @@ void solver_free(solver *s)
     free(s->k.dm);
     free(s->scratch);
     free(s->order);
+    surface_tension_free(&s->st_work);
     particles_free(&s->p);
     cells_free(&s->grid);
     neighbours_free(&s->nl);

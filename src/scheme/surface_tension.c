@@ -3,14 +3,17 @@
 #include "boundary/tank.h"
 #include "core/reduce.h"
 #include "diag/freesurface.h"
+#include "physics/moment.h"
 #include "physics/surface_tension.h"
 #include "scheme/pair.h"
 
 #include <stdlib.h>
+#include <string.h>
 
-surface_tension_params surface_tension_setup(const kernel *k, double dr, double sigma)
+surface_tension_params surface_tension_setup(const kernel *k, double dr, double sigma,
+                                             double lambda_min)
 {
-    surface_tension_params st = {sigma, dr, 0.0};
+    surface_tension_params st = {sigma, dr, 0.0, lambda_min};
     /* the layers within the support of the top one: the depth of S_F on a flat surface */
     int layers = (int)ceil(2.0 * k->h / dr) + 1;
     for (int depth = 0; depth < layers; depth++) {
@@ -22,34 +25,81 @@ surface_tension_params surface_tension_setup(const kernel *k, double dr, double 
     return st;
 }
 
-/* delta_Sigma = 2 |sum grad W V| / flat_integral in S_F (theory §4: the factor 2 because the
- * gas half of the kernel is missing; the calibration makes its integral across a flat
- * lattice surface exactly 1), 0 in the interior. fields_geometry sums the same gradient, but
- * before EdBC: like the shifting velocity, the force of the step weighs the corrected
- * volumes, so the sum is taken again here, over S_F only. */
-static void interface_function(const surface_tension_params *st, const kernel *k, particles *p,
-                               const neighbour_list *nl)
+int surface_tension_reserve(surface_tension_work *w, size_t n_total)
+{
+    if (n_total <= w->capacity) return 0;
+    surface_tension_free(w);
+    int ok = 1;
+    for (int d = 0; d < DIM; d++) {
+        ok &= (w->normal[d] = malloc(n_total * sizeof(double))) != NULL;
+        ok &= (w->smooth[d] = malloc(n_total * sizeof(double))) != NULL;
+    }
+    ok &= (w->kappa = malloc(n_total * sizeof(double))) != NULL;
+    ok &= (w->band_sum = malloc(n_total * sizeof(double))) != NULL;
+    ok &= (w->parent = malloc(n_total * sizeof(int32_t))) != NULL;
+    ok &= (w->body = malloc(n_total * sizeof(surface_body))) != NULL;
+    if (!ok) {
+        surface_tension_free(w);
+        return -1;
+    }
+    w->capacity = n_total;
+    return 0;
+}
+
+void surface_tension_free(surface_tension_work *w)
+{
+    for (int d = 0; d < DIM; d++) {
+        free(w->normal[d]);
+        free(w->smooth[d]);
+    }
+    free(w->kappa);
+    free(w->band_sum);
+    free(w->parent);
+    free(w->body);
+    memset(w, 0, sizeof *w);
+}
+
+/* In S_F, from the current positions: delta_Sigma = 2 |sum grad W V| / flat_integral
+ * (theory §4: the factor 2 because the gas half of the kernel is missing; the calibration
+ * makes its integral across a flat lattice surface exactly 1) and the normal
+ * -L^-1 sum grad W V, as fields_geometry computes it at the start of the step. Both are
+ * taken again at every stage: a force that stays where the surface was while the particles
+ * move pumps energy into the surface's short waves (docs/surface-tension.md). 0 in the
+ * interior. */
+static void interface_and_normals(const surface_tension_params *st, const kernel *k, particles *p,
+                                  const neighbour_list *nl, surface_tension_work *w)
 {
 #pragma omp parallel for schedule(static)
     for (size_t i = 0; i < p->n_fluid; i++) {
-        double delta = 0.0;
+        double delta = 0.0, band = 0.0;
+        vec n = vec_zero();
         if (p->surface[i] != SURFACE_INTERIOR) {
-            vec xi = vec_load(p->x, i), sum = vec_zero();
+            vec xi = vec_load(p->x, i), grad_one = vec_zero();
+            mat l = mat_zero();
+            band = k->norm * p->vol[i];
             const int32_t *row = neighbour_row(nl, i);
             for (int32_t m = 0; m < nl->count[i]; m++) {
                 pair pr;
                 if (!pair_of(k, p->x, xi, row, m, &pr)) continue;
-                sum = vec_axpy(sum, pr.f * p->vol[pr.j], pr.r_ji);
+                double fv = pr.f * p->vol[pr.j];
+                grad_one = vec_axpy(grad_one, fv, pr.r_ji);
+                mat_add_outer(&l, fv, pr.r_ji, pr.r_ji);
+                if (p->surface[pr.j] != SURFACE_INTERIOR) band += kernel_w(k, pr.r) * p->vol[pr.j];
             }
-            delta = 2.0 * vec_norm(sum) / st->flat_integral;
+            delta = 2.0 * vec_norm(grad_one) / st->flat_integral;
+            mat l_inv = renormalization(&l, mat_min_eigenvalue(&l), st->lambda_min);
+            double length;
+            n = outward_normal(&l_inv, grad_one, &length);
         }
         p->interface[i] = delta;
+        w->band_sum[i] = band;
+        vec_store(w->normal, i, n);
     }
 }
 
 /* Ghosts carry their source's interface function, S_F flag and mirrored normal: the walls
  * continue the surface at a right angle (no contact-angle model, docs/surface-tension.md). */
-static void mirror_into_ghosts(particles *p)
+static void mirror_into_ghosts(particles *p, surface_tension_work *w)
 {
 #pragma omp parallel for schedule(static)
     for (size_t g = p->n_fluid; g < p->n_total; g++) {
@@ -57,7 +107,8 @@ static void mirror_into_ghosts(particles *p)
         unsigned walls = p->ghost_walls[g - p->n_fluid];
         p->interface[g] = p->interface[i];
         p->surface[g] = p->surface[i];
-        vec_store(p->normal, g, tank_mirror_vector(vec_load(p->normal, i), walls));
+        w->band_sum[g] = w->band_sum[i];
+        vec_store(w->normal, g, tank_mirror_vector(vec_load(w->normal, i), walls));
     }
 }
 
@@ -70,18 +121,18 @@ static void mirror_into_ghosts(particles *p)
  * (docs/surface-tension.md). Other fluid particles keep their own normal; ghosts get their
  * source's, mirrored. */
 static void smoothed_normals(const kernel *k, const particles *p, const neighbour_list *nl,
-                             double *const smooth[DIM])
+                             double *const normal[DIM], double *const smooth[DIM])
 {
 #pragma omp parallel for schedule(static)
     for (size_t i = 0; i < p->n_fluid; i++) {
-        vec xi = vec_load(p->x, i), sum = vec_scale(vec_load(p->normal, i), k->norm * p->vol[i]);
+        vec xi = vec_load(p->x, i), sum = vec_scale(vec_load(normal, i), k->norm * p->vol[i]);
         if (p->surface[i] == SURFACE_FREE) {
             const int32_t *row = neighbour_row(nl, i);
             for (int32_t m = 0; m < nl->count[i]; m++) {
                 pair pr;
                 if (!pair_of(k, p->x, xi, row, m, &pr) || p->surface[pr.j] != SURFACE_FREE)
                     continue;
-                sum = vec_axpy(sum, kernel_w(k, pr.r) * p->vol[pr.j], vec_load(p->normal, pr.j));
+                sum = vec_axpy(sum, kernel_w(k, pr.r) * p->vol[pr.j], vec_load(normal, pr.j));
             }
         }
         double norm = vec_norm(sum);
@@ -117,10 +168,20 @@ static void surface_curvature(const surface_tension_params *st, const kernel *k,
     tank_copy_to_ghosts(p, kappa);
 }
 
-/* kappa of S_F: the Shepard average of the free-surface curvature within the support, which
- * also smooths the noise of a rough surface over 2h; then the force -sigma kappa n delta V. */
+/* The force on the particles of S_F, -sigma kappa n delta V, with all three factors taken as
+ * Shepard averages within the support, which depend on the surface and not on the
+ * particle's own neighbourhood:
+ * - kappa and n: the averages of the free-surface particles' curvature and smoothed normal;
+ * - delta: each particle's delta V spread over S_F within its support in proportion to W V,
+ *   delta~_i = sum_j W_ij delta_j V_j / sum_k W_jk V_k, which keeps sum delta V, the area,
+ *   exact (a Shepard average would not, and weakened the force by a tenth).
+ * A particle's own delta and normal below the surface measure the holes around it: the CSF
+ * force is the gradient of a negative pressure -sigma kappa c (c the colour), and along
+ * those it pulls each particle towards its crowded side, a tensile instability that roughens
+ * the surface and feeds it energy at water's viscosity (docs/surface-tension.md). */
 static void band_force(const surface_tension_params *st, const kernel *k, particles *p,
-                       const neighbour_list *nl, const double *kappa_surface)
+                       const neighbour_list *nl, double *const smooth[DIM],
+                       const double *kappa_surface, const double *band_sum)
 {
 #pragma omp parallel for schedule(static)
     for (size_t i = 0; i < p->n_fluid; i++) {
@@ -128,22 +189,27 @@ static void band_force(const surface_tension_params *st, const kernel *k, partic
         vec force = vec_zero();
         if (p->interface[i] > 0.0) {
             vec xi = vec_load(p->x, i);
-            int free = p->surface[i] == SURFACE_FREE;
-            double w0 = free ? k->norm * p->vol[i] : 0.0; /* the self term W(0) V_i */
-            double sum_w = w0, sum_wk = w0 * kappa_surface[i];
+            double self = k->norm * p->vol[i]; /* the self term W(0) V_i */
+            double w_free = p->surface[i] == SURFACE_FREE ? self : 0.0;
+            double sum_free = w_free, sum_kappa = w_free * kappa_surface[i];
+            vec sum_normal = vec_scale(vec_load(smooth, i), w_free);
+            double delta = self * p->interface[i] / band_sum[i];
             const int32_t *row = neighbour_row(nl, i);
             for (int32_t m = 0; m < nl->count[i]; m++) {
                 pair pr;
-                if (!pair_of(k, p->x, xi, row, m, &pr) || p->surface[pr.j] != SURFACE_FREE)
-                    continue;
+                if (!pair_of(k, p->x, xi, row, m, &pr) || p->interface[pr.j] == 0.0) continue;
                 double wv = kernel_w(k, pr.r) * p->vol[pr.j];
-                sum_w += wv;
-                sum_wk += wv * kappa_surface[pr.j];
+                delta += kernel_w(k, pr.r) * p->interface[pr.j] * p->vol[pr.j] / band_sum[pr.j];
+                if (p->surface[pr.j] != SURFACE_FREE) continue;
+                sum_free += wv;
+                sum_kappa += wv * kappa_surface[pr.j];
+                sum_normal = vec_axpy(sum_normal, wv, vec_load(smooth, pr.j));
             }
-            if (sum_w > 0.0) {
-                kappa = sum_wk / sum_w;
-                force =
-                    csf_force(st->sigma, kappa, p->interface[i], p->vol[i], vec_load(p->normal, i));
+            double length = vec_norm(sum_normal);
+            if (sum_free > 0.0 && length > 0.0) {
+                kappa = sum_kappa / sum_free;
+                force = csf_force(st->sigma, kappa, delta, p->vol[i],
+                                  vec_scale(sum_normal, 1.0 / length));
             }
         }
         p->curvature[i] = kappa;
@@ -169,72 +235,82 @@ static void unite(int32_t *parent, int32_t a, int32_t b)
     if (b < a) parent[a] = b;
 }
 
-/* In the continuum the surface force on a closed body of liquid sums to zero; the discrete
- * one leaves a small residual, removed here body by body in proportion to delta V. A body
- * whose interface comes within 2h of a wall (a ghost neighbour) keeps its sum: the wall takes
- * the reaction of its contact lines. Serial and in index order: the result does not depend on
- * the thread count, and the loops run over the interface particles only. */
-static int remove_net_force(const kernel *k, particles *p, const neighbour_list *nl)
+/* The bodies: the connected sets of interface particles (within 2h), each flagged when a
+ * ghost is among its neighbours. */
+static void find_bodies(const kernel *k, const particles *p, const neighbour_list *nl,
+                        surface_tension_work *w)
 {
-    size_t n = p->n_fluid;
-    int32_t *parent = malloc((n ? n : 1) * sizeof *parent);
-    uint8_t *at_wall = calloc(n ? n : 1, 1);
-    double *weight = calloc(n ? n : 1, sizeof *weight);
-    vec *net = calloc(n ? n : 1, sizeof *net);
-    int status = parent && at_wall && weight && net ? 0 : -1;
-    if (status == 0) {
-        for (size_t i = 0; i < n; i++) parent[i] = (int32_t)i;
-        for (size_t i = 0; i < n; i++) {
-            if (p->interface[i] == 0.0) continue;
-            vec xi = vec_load(p->x, i);
-            const int32_t *row = neighbour_row(nl, i);
-            for (int32_t m = 0; m < nl->count[i]; m++) {
-                pair pr;
-                if (!pair_of(k, p->x, xi, row, m, &pr)) continue;
-                if (pr.j >= n)
-                    at_wall[i] = 1;
-                else if (p->interface[pr.j] > 0.0)
-                    unite(parent, (int32_t)i, (int32_t)pr.j);
-            }
-        }
-        for (size_t i = 0; i < n; i++) {
-            if (p->interface[i] == 0.0) continue;
-            int32_t r = find_root(parent, (int32_t)i);
-            at_wall[r] |= at_wall[i];
-            net[r] = vec_add(net[r], vec_load(p->st_force, i));
-            weight[r] += p->interface[i] * p->vol[i];
-        }
-        for (size_t i = 0; i < n; i++) {
-            if (p->interface[i] == 0.0) continue;
-            int32_t r = find_root(parent, (int32_t)i);
-            if (at_wall[r] || !(weight[r] > 0.0)) continue;
-            double share = p->interface[i] * p->vol[i] / weight[r];
-            vec_store(p->st_force, i, vec_axpy(vec_load(p->st_force, i), -share, net[r]));
+    for (size_t i = 0; i < p->n_fluid; i++) {
+        w->parent[i] = (int32_t)i;
+        w->body[i] = (surface_body){0};
+    }
+    for (size_t i = 0; i < p->n_fluid; i++) {
+        if (p->interface[i] == 0.0) continue;
+        vec xi = vec_load(p->x, i);
+        const int32_t *row = neighbour_row(nl, i);
+        for (int32_t m = 0; m < nl->count[i]; m++) {
+            pair pr;
+            if (!pair_of(k, p->x, xi, row, m, &pr)) continue;
+            if (pr.j >= p->n_fluid)
+                w->body[i].at_wall = 1;
+            else if (p->interface[pr.j] > 0.0)
+                unite(w->parent, (int32_t)i, (int32_t)pr.j);
         }
     }
-    free(parent);
-    free(at_wall);
-    free(weight);
-    free(net);
-    return status;
 }
 
-int surface_tension_compute(const surface_tension_params *st, const kernel *k, particles *p,
-                            const neighbour_list *nl)
+/* In the continuum, the surface force on a closed body of liquid has no resultant and no
+ * moment; the discrete one leaves small residuals of both, removed here body by body: the
+ * resultant in proportion to delta V, the moment as the field delta V (Omega x r) about the
+ * body's centre whose moment it is (a rigid rotation's pattern, which adds no resultant). A
+ * body whose interface comes within 2h of a wall keeps both: the wall takes the reaction of
+ * its contact lines. Serial and in index order, over the interface particles only: the
+ * result does not depend on the thread count. */
+static void balance_bodies(const kernel *k, particles *p, const neighbour_list *nl,
+                           surface_tension_work *w)
 {
-    /* per particle, fluid and ghosts: the smoothed normal and the free-surface curvature */
-    size_t n = p->n_total ? p->n_total : 1;
-    double *work = malloc((DIM + 1) * n * sizeof *work);
-    if (!work) return -1;
-    double *smooth[DIM], *kappa_surface = work + DIM * n;
-    for (int d = 0; d < DIM; d++) smooth[d] = work + (size_t)d * n;
-    interface_function(st, k, p, nl);
-    mirror_into_ghosts(p);
-    smoothed_normals(k, p, nl, smooth);
-    surface_curvature(st, k, p, nl, smooth, kappa_surface);
-    band_force(st, k, p, nl, kappa_surface);
-    free(work);
-    return remove_net_force(k, p, nl);
+    find_bodies(k, p, nl, w);
+    size_t n = p->n_fluid;
+    for (size_t i = 0; i < n; i++) { /* resultant, weight and centre */
+        if (p->interface[i] == 0.0) continue;
+        surface_body *b = &w->body[find_root(w->parent, (int32_t)i)];
+        double wi = p->interface[i] * p->vol[i];
+        b->at_wall |= w->body[i].at_wall;
+        b->force = vec_add(b->force, vec_load(p->st_force, i));
+        b->weight += wi;
+        b->centre = vec_axpy(b->centre, wi, vec_load(p->x, i));
+    }
+    for (size_t i = 0; i < n; i++) { /* the resultant removed; moment and inertia */
+        if (p->interface[i] == 0.0) continue;
+        surface_body *b = &w->body[find_root(w->parent, (int32_t)i)];
+        if (b->at_wall || !(b->weight > 0.0)) continue;
+        double wi = p->interface[i] * p->vol[i];
+        vec f = vec_axpy(vec_load(p->st_force, i), -wi / b->weight, b->force);
+        vec_store(p->st_force, i, f);
+        vec r = vec_sub(vec_load(p->x, i), vec_scale(b->centre, 1.0 / b->weight));
+        moment_add(b->moment, 1.0, r, f);
+        inertia_add(b->inertia, wi, r);
+    }
+    for (size_t i = 0; i < n; i++) { /* the moment removed */
+        if (p->interface[i] == 0.0) continue;
+        surface_body *b = &w->body[find_root(w->parent, (int32_t)i)];
+        if (b->at_wall || !(b->weight > 0.0)) continue;
+        vec r = vec_sub(vec_load(p->x, i), vec_scale(b->centre, 1.0 / b->weight));
+        double wi = p->interface[i] * p->vol[i];
+        vec f = vec_axpy(vec_load(p->st_force, i), -wi, rotation_field(b->inertia, b->moment, r));
+        vec_store(p->st_force, i, f);
+    }
+}
+
+void surface_tension_compute(const surface_tension_params *st, const kernel *k, particles *p,
+                             const neighbour_list *nl, surface_tension_work *w)
+{
+    interface_and_normals(st, k, p, nl, w);
+    mirror_into_ghosts(p, w);
+    smoothed_normals(k, p, nl, w->normal, w->smooth);
+    surface_curvature(st, k, p, nl, w->smooth, w->kappa);
+    band_force(st, k, p, nl, w->smooth, w->kappa, w->band_sum);
+    balance_bodies(k, p, nl, w);
 }
 
 double surface_tension_power(const particles *p, double *scratch)

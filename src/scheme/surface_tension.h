@@ -1,36 +1,68 @@
 /* surface_tension: the single-phase CSF force F^st = -sigma kappa n delta_Sigma of the paper
- * (sec. 2.2), computed once per step from the positions and frozen over the RK stages like
- * the other per-step terms (sec. 2.4). docs/surface-tension.md gives the method, its
- * accuracy and where it departs from the C-CSF of Vergnaud et al. 2022. */
+ * (sec. 2.2), computed at every RK stage from the stage's positions (the region S_F is the
+ * step's). docs/surface-tension.md gives the method, its accuracy, why it is not frozen over
+ * the step like the diffusive terms, and where it departs from the C-CSF of Vergnaud et al.
+ * 2022. */
 #ifndef VCSPH_SURFACE_TENSION_H
 #define VCSPH_SURFACE_TENSION_H
 
 #include "core/cells.h"
 #include "core/kernel.h"
 #include "core/particles.h"
+#include "core/vec.h"
 
 /* The flat-surface calibration of the interface function, from a lattice half-space. */
 typedef struct {
     double sigma;         /* N/m; 0: off */
     double dr;            /* particle spacing */
     double flat_integral; /* sum over the layers of 2 |sum grad W V| dr on a flat lattice */
+    double lambda_min;    /* the normal uses L^-1 where lambda exceeds this (theory §2) */
 } surface_tension_params;
+
+/* What one body of liquid sums for the balance of its force and moment. */
+typedef struct {
+    uint8_t at_wall;      /* its surface comes within 2h of a wall: the wall takes the reaction */
+    double weight;        /* sum delta V over its surface */
+    vec centre;           /* the delta V-weighted centre of its surface */
+    vec force;            /* the net force on it */
+    double moment[3];     /* the net moment about its centre (2D: the z component alone) */
+    double inertia[3][3]; /* sum delta V (|r|^2 I - r r) about its centre (2D: [2][2]) */
+} surface_body;
+
+/* Work arrays of the force, kept between calls so that a stage never allocates. */
+typedef struct {
+    size_t capacity;     /* particles, fluid and ghosts */
+    double *normal[DIM]; /* the normal of S_F at the stage's positions */
+    double *smooth[DIM]; /* its Shepard average over the free surface */
+    double *kappa;       /* the curvature of the free-surface particles */
+    double *band_sum;    /* sum W V over S_F, self included: what delta V spreads over */
+    int32_t *parent;     /* the bodies: union-find over the fluid */
+    surface_body *body;  /* indexed by each body's root */
+} surface_tension_work;
 
 #define surface_tension_setup   DIM_NAME(surface_tension_setup)
 #define surface_tension_compute DIM_NAME(surface_tension_compute)
+#define surface_tension_reserve DIM_NAME(surface_tension_reserve)
+#define surface_tension_free    DIM_NAME(surface_tension_free)
 #define surface_tension_power   DIM_NAME(surface_tension_power)
 #define surface_tension_energy  DIM_NAME(surface_tension_energy)
 
-surface_tension_params surface_tension_setup(const kernel *k, double dr, double sigma);
+surface_tension_params surface_tension_setup(const kernel *k, double dr, double sigma,
+                                             double lambda_min);
+
+/* Makes room in w for p->n_total particles. Returns 0, or -1 when out of memory. */
+int surface_tension_reserve(surface_tension_work *w, size_t n_total);
+void surface_tension_free(surface_tension_work *w);
 
 /* Fills p->interface (delta_Sigma, 1/m, normalised so that it integrates to 1 across a flat
  * lattice surface), p->curvature and p->st_force (the force on each fluid particle, N) from
- * this step's normals and S_F (fields_geometry), and mirrors normal and interface into the
- * ghosts. The force on every body of liquid that touches no wall sums to zero exactly: each
- * such body gets its round-off residual removed, so that its momentum is conserved. Returns
- * 0, or -1 when out of memory. */
-int surface_tension_compute(const surface_tension_params *st, const kernel *k, particles *p,
-                            const neighbour_list *nl);
+ * the current positions, with the step's S_F (fields_geometry), and mirrors interface and S_F
+ * into the ghosts; w holds room for p->n_total particles (surface_tension_reserve). On every
+ * body of liquid that touches no wall, the force and its moment sum to zero exactly, as the
+ * continuum's do: each such body gets its discrete residuals removed, so that its momentum
+ * and angular momentum are conserved. */
+void surface_tension_compute(const surface_tension_params *st, const kernel *k, particles *p,
+                             const neighbour_list *nl, surface_tension_work *w);
 
 /* The surface energy sigma sum delta V (J; per unit width in 2D): sigma times the discrete
  * interface area, whose measure delta integrates to 1 across a flat surface. Needs this
@@ -38,7 +70,7 @@ int surface_tension_compute(const surface_tension_params *st, const kernel *k, p
 double surface_tension_energy(const surface_tension_params *st, const particles *p,
                               double *scratch);
 
-/* The power of the frozen force on the fluid, sum F^st . u (W), in a fixed order. */
+/* The power of the force on the fluid, sum F^st . u (W), in a fixed order. */
 double surface_tension_power(const particles *p, double *scratch);
 
 #endif

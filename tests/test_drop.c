@@ -1,0 +1,185 @@
+/* A free drop of water under surface tension at water's viscosity (docs/surface-tension.md):
+ * the 24 x 16 mm rectangle of the outside check, and the 1.5 : 1 ellipse of the same area,
+ * 2D, weightless, sigma = 0.0727 N/m, nu = 1e-6, at N = 30 (R / dr = 20.7) over 0.8 s, 2.3
+ * periods of Lamb's mode 2, omega^2 = 6 sigma / (rho R^3) (Lamb 1932, art. 275, in 2D):
+ * - angular momentum about the centre of mass: |L| / (M R u_max) below 1e-3, u_max the
+ *   largest speed of the run (a free body: nothing exerts a moment on it);
+ * - the mode-2 period from the zero crossings of I_xx - I_yy, the second moments of the
+ *   particle positions about their centre (which the drop's rotation would not fool, as it
+ *   fools the width), within 5 % of Lamb's: the viscous shift is 1e-6 and the
+ *   finite-amplitude shift a few per cent at this deformation (0.2 R);
+ * - |eps_v1| below 0.5 %: a drop that swells fails it.
+ * Before the force took its normal, curvature and interface function from the surface
+ * (scheme/surface_tension.c), the rectangle reached eps_v1 = +0.9 % at 0.5 s and its surface
+ * particles rose by half. */
+#include "diag/freesurface.h"
+#include "diag/volume.h"
+#include "scheme/solver.h"
+
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <cmocka.h>
+
+#include "check.h"
+
+#define SIGMA 0.0727 /* N/m */
+#define RHO   1000.0
+
+/* The resolution and the duration: the test's, or the command line's (tools/validate-drop
+ * runs the outside check's N = 40 over 1.5 s through the same checks). */
+static int resolution = 30;
+static double t_end = 0.8;
+
+/* The drop centred in a 0.1 m square tank. */
+static void start_drop(config *cfg, solver *s, const char *shape, double length, double height,
+                       const char *scheme)
+{
+    char text[1024], err[1024];
+    snprintf(text, sizeof text,
+             "[case]\nname = drop\ndim = 2\nt_end = %g\n[tank]\nlength = 0.1\nheight = 0.1\n"
+             "[liquid]\nshape = %s\nlength = %.17g\nheight = %.17g\nx0 = %.17g\ny0 = %.17g\n"
+             "[fluid]\nviscosity = 1.0e-6\nsurface_tension = %g\ngravity = 0\n"
+             "[model]\nscheme = %s\n[numerics]\nresolution = %d\nsound_speed = 5\n",
+             t_end, shape, length, height, 0.05 - 0.5 * length, 0.05 - 0.5 * height, SIGMA, scheme,
+             resolution);
+    if (config_load_string(cfg, text, "test", NULL, 0, err, sizeof err)) fail_msg("%s", err);
+    if (solver_init(s, cfg, err, sizeof err)) fail_msg("%s", err);
+}
+
+typedef struct {
+    double mass, centre[DIM];
+    double moment_xx_minus_yy; /* I_xx - I_yy about the centre */
+    double angular;            /* L_z about the centre */
+    double umax;
+} drop_state;
+
+static drop_state measure(const particles *p)
+{
+    drop_state d = {0};
+    for (size_t i = 0; i < p->n_fluid; i++) {
+        d.mass += p->m[i];
+        for (int a = 0; a < DIM; a++) d.centre[a] += p->m[i] * p->x[a][i];
+    }
+    for (int a = 0; a < DIM; a++) d.centre[a] /= d.mass;
+    for (size_t i = 0; i < p->n_fluid; i++) {
+        double rx = p->x[0][i] - d.centre[0], ry = p->x[1][i] - d.centre[1];
+        d.moment_xx_minus_yy += p->m[i] * (rx * rx - ry * ry);
+        d.angular += p->m[i] * (rx * p->u[1][i] - ry * p->u[0][i]);
+        double speed = sqrt(p->u[0][i] * p->u[0][i] + p->u[1][i] * p->u[1][i]);
+        if (speed > d.umax) d.umax = speed;
+    }
+    return d;
+}
+
+static size_t count_free_surface(const particles *p)
+{
+    size_t n = 0;
+    for (size_t i = 0; i < p->n_fluid; i++) n += p->surface[i] == SURFACE_FREE;
+    return n;
+}
+
+static void check_drop(const char *shape, double length, double height, const char *scheme)
+{
+    config cfg;
+    solver s;
+    start_drop(&cfg, &s, shape, length, height, scheme);
+    double radius = sqrt((double)s.p.n_fluid * s.dv.cell_volume / M_PI);
+    double lamb = 2.0 * M_PI / sqrt(6.0 * SIGMA / (RHO * pow(radius, 3)));
+    double umax = 0.0, worst_angular = 0.0, worst_eps = 0.0, previous = 0.0, crossing[64];
+    double mass = 0.0;
+    size_t free0 = 0, free_lo = SIZE_MAX, free_hi = 0;
+    int crossings = 0;
+    while (s.t < cfg.t_end) {
+        assert_int_equal(solver_prepare(&s, cfg.t_end), 0);
+        volume_errors ve;
+        volume_compute(&s.p, s.dv.cell_volume, s.scratch, &ve);
+        if (fabs(ve.eps_v1) > worst_eps) worst_eps = fabs(ve.eps_v1);
+        size_t n_free = count_free_surface(&s.p);
+        if (s.t >= 0.1) {
+            if (free0 == 0) free0 = n_free;
+            if (n_free < free_lo) free_lo = n_free;
+            if (n_free > free_hi) free_hi = n_free;
+        }
+        drop_state d = measure(&s.p);
+        mass = d.mass;
+        if (d.umax > umax) umax = d.umax;
+        if (fabs(d.angular) > worst_angular) worst_angular = fabs(d.angular);
+        /* a zero crossing of I_xx - I_yy, by linear interpolation */
+        if (s.step > 0 && (previous < 0.0) != (d.moment_xx_minus_yy < 0.0) && crossings < 64)
+            crossing[crossings++] =
+                s.t - s.last_dt * d.moment_xx_minus_yy / (d.moment_xx_minus_yy - previous);
+        previous = d.moment_xx_minus_yy;
+        solver_advance(&s, cfg.t_end);
+    }
+    /* from the second crossing on: the first half period is the corners rounding off */
+    assert_true(crossings >= 4);
+    double period = 2.0 * (crossing[crossings - 1] - crossing[1]) / (crossings - 2);
+    double angular = worst_angular / (mass * radius * umax);
+    printf("%s, %s, R/dr = %.1f: |L|/(M R u_max) %.2e, mode-2 period %.4f s from %d zero "
+           "crossings after the first, Lamb %.4f s (%+.1f %%), max |eps_v1| %.3f %%, free surface "
+           "%zu..%zu "
+           "(%zu at 0.1 s), u_max %.3f m/s\n",
+           shape, scheme, radius / s.dv.dr, angular, period, crossings - 1, lamb,
+           100.0 * (period / lamb - 1.0), 100.0 * worst_eps, free_lo, free_hi, free0, umax);
+    assert_true(angular < 1e-3);
+    assert_close(period / lamb, 1.0, 0.05);
+    assert_true(worst_eps < 0.005);
+    /* The outside check also asks the free-surface count to stay within 10 % of its value at
+       0.1 s. The rectangle holds it here (-8 %, +3 %); the ellipse does not yet (+11 % here,
+       +13.5 % at N = 40 over 1.5 s, against +53 % for the rectangle before the fix), so it is
+       printed, not asserted: open in issue 18. */
+    solver_free(&s);
+}
+
+static void test_rectangle_delta_plus(void **state)
+{
+    (void)state;
+    check_drop("box", 0.024, 0.016, "delta-plus");
+}
+
+/* the ellipse of the rectangle's area, semi-axes in the ratio 1.5 : 1 */
+static void test_ellipse_delta_plus_ale(void **state)
+{
+    (void)state;
+    double b = sqrt(0.024 * 0.016 / (1.5 * M_PI)), a = 1.5 * b;
+    check_drop("ellipse", 2.0 * a, 2.0 * b, "delta-plus-ale");
+}
+
+/* The surface energy sigma sum delta V at t = 0 against sigma x the ellipse's perimeter
+ * (Ramanujan's second formula, exact to 1e-6 at this aspect); the measure reads 0.98 of the
+ * perimeter on smooth circles at R / dr = 20 (docs/surface-tension.md), so 5 %. */
+static void test_ellipse_surface_energy(void **state)
+{
+    (void)state;
+    double b = sqrt(0.024 * 0.016 / (1.5 * M_PI)), a = 1.5 * b;
+    config cfg;
+    solver s;
+    start_drop(&cfg, &s, "ellipse", 2.0 * a, 2.0 * b, "delta-plus-ale");
+    assert_int_equal(solver_prepare(&s, cfg.t_end), 0);
+    double esurf = surface_tension_energy(&s.st, &s.p, s.scratch);
+    double h = pow((a - b) / (a + b), 2);
+    double perimeter = M_PI * (a + b) * (1.0 + 3.0 * h / (10.0 + sqrt(4.0 - 3.0 * h)));
+    printf("surface energy at t = 0: %.6f J, sigma x perimeter %.6f J (%+.1f %%)\n", esurf,
+           SIGMA * perimeter, 100.0 * (esurf / (SIGMA * perimeter) - 1.0));
+    assert_close(esurf / (SIGMA * perimeter), 1.0, 0.05);
+    solver_free(&s);
+}
+
+int main(int argc, char **argv)
+{
+    if (argc == 3) {
+        resolution = atoi(argv[1]);
+        t_end = atof(argv[2]);
+    }
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_rectangle_delta_plus),
+        cmocka_unit_test(test_ellipse_delta_plus_ale),
+        cmocka_unit_test(test_ellipse_surface_energy),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
