@@ -97,8 +97,16 @@ static void interface_and_normals(const surface_tension_params *st, const kernel
     }
 }
 
-/* Ghosts carry their source's interface function, S_F flag and mirrored normal: the walls
- * continue the surface at a right angle (no contact-angle model, docs/surface-tension.md). */
+/* Ghosts carry their source's S_F flag (before anything reads it: the step's ghosts are new),
+ * then its interface function and mirrored normal: the walls continue the surface at a right
+ * angle (no contact-angle model, docs/surface-tension.md). */
+static void mirror_region_into_ghosts(particles *p)
+{
+#pragma omp parallel for schedule(static)
+    for (size_t g = p->n_fluid; g < p->n_total; g++)
+        p->surface[g] = p->surface[p->ghost_source[g - p->n_fluid]];
+}
+
 static void mirror_into_ghosts(particles *p, surface_tension_work *w)
 {
 #pragma omp parallel for schedule(static)
@@ -106,7 +114,6 @@ static void mirror_into_ghosts(particles *p, surface_tension_work *w)
         size_t i = (size_t)p->ghost_source[g - p->n_fluid];
         unsigned walls = p->ghost_walls[g - p->n_fluid];
         p->interface[g] = p->interface[i];
-        p->surface[g] = p->surface[i];
         w->band_sum[g] = w->band_sum[i];
         vec_store(w->normal, g, tank_mirror_vector(vec_load(w->normal, i), walls));
     }
@@ -305,6 +312,7 @@ static void balance_bodies(const kernel *k, particles *p, const neighbour_list *
 void surface_tension_compute(const surface_tension_params *st, const kernel *k, particles *p,
                              const neighbour_list *nl, surface_tension_work *w)
 {
+    mirror_region_into_ghosts(p);
     interface_and_normals(st, k, p, nl, w);
     mirror_into_ghosts(p, w);
     smoothed_normals(k, p, nl, w->normal, w->smooth);
