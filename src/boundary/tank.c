@@ -80,6 +80,7 @@ void tank_mirror_step_fields(particles *p, vec g_eff, double c0)
         vec_store(p->grad_rho, g, vec_add(tank_mirror_vector(dynamic, walls), grad_hydro));
         p->nu_t[g] = p->nu_t[i];
         p->nu_delta[g] = p->nu_delta[i];
+        p->surface[g] = p->surface[i];
         vec_store(p->shift, g, tank_mirror_vector(vec_load(p->shift, i), walls));
         vec_store(p->correction, g, tank_mirror_vector(vec_load(p->correction, i), walls));
     }

@@ -30,8 +30,8 @@ int tank_make_ghosts(const tank *t, particles *p, double reach);
  * p_g = p_i + rho_i g_eff . (r_g - r_i), and density from the EOS. Needs fluid p. */
 void tank_refresh_ghosts(const tank *t, particles *p, vec g_eff, double rho0, double c0);
 
-/* Per-step fields of the ghosts from their sources: eddy viscosity and diffusion coefficient
- * copied; shifting and volume-correction velocities mirrored (free slip); density gradient = mirror
+/* Per-step fields of the ghosts from their sources: eddy viscosity, diffusion coefficient and
+ * S_F flag copied; shifting and volume-correction velocities mirrored (free slip); density gradient = mirror
  * of the source's dynamic part plus the hydrostatic gradient rho g_eff / c0^2, consistent with the
  * hydrostatic continuation above. */
 void tank_mirror_step_fields(particles *p, vec g_eff, double c0);

@@ -97,16 +97,9 @@ static void interface_and_normals(const surface_tension_params *st, const kernel
     }
 }
 
-/* Ghosts carry their source's S_F flag (before anything reads it: the step's ghosts are new),
- * then its interface function and mirrored normal: the walls continue the surface at a right
- * angle (no contact-angle model, docs/surface-tension.md). */
-static void mirror_region_into_ghosts(particles *p)
-{
-#pragma omp parallel for schedule(static)
-    for (size_t g = p->n_fluid; g < p->n_total; g++)
-        p->surface[g] = p->surface[p->ghost_source[g - p->n_fluid]];
-}
-
+/* Ghosts carry their source's interface function and mirrored normal (and, from
+ * tank_mirror_step_fields, its S_F flag): the walls continue the surface at a right angle
+ * (no contact-angle model, docs/surface-tension.md). */
 static void mirror_into_ghosts(particles *p, surface_tension_work *w)
 {
 #pragma omp parallel for schedule(static)
@@ -205,8 +198,8 @@ static void band_force(const surface_tension_params *st, const kernel *k, partic
             for (int32_t m = 0; m < nl->count[i]; m++) {
                 pair pr;
                 if (!pair_of(k, p->x, xi, row, m, &pr) || p->interface[pr.j] == 0.0) continue;
-                double wv = kernel_w(k, pr.r) * p->vol[pr.j];
-                delta += kernel_w(k, pr.r) * p->interface[pr.j] * p->vol[pr.j] / band_sum[pr.j];
+                double w = kernel_w(k, pr.r), wv = w * p->vol[pr.j];
+                delta += w * p->interface[pr.j] * p->vol[pr.j] / band_sum[pr.j];
                 if (p->surface[pr.j] != SURFACE_FREE) continue;
                 sum_free += wv;
                 sum_kappa += wv * kappa_surface[pr.j];
@@ -312,7 +305,6 @@ static void balance_bodies(const kernel *k, particles *p, const neighbour_list *
 void surface_tension_compute(const surface_tension_params *st, const kernel *k, particles *p,
                              const neighbour_list *nl, surface_tension_work *w)
 {
-    mirror_region_into_ghosts(p);
     interface_and_normals(st, k, p, nl, w);
     mirror_into_ghosts(p, w);
     smoothed_normals(k, p, nl, w->normal, w->smooth);
