@@ -137,6 +137,7 @@ int solver_prepare(solver *s, double t_stop)
     fields_frozen_terms(&s->pp, &s->p, &s->nl, g_eff, s->eta_control.eta > 0.0, s->dt);
     if (s->pp.surface_tension) { /* the force of stage 0, and room for the other stages' */
         if (surface_tension_reserve(&s->st_work, s->p.n_total)) return -1;
+        surface_tension_find_bodies(&s->pp.k, &s->p, &s->nl, &s->st_work);
         surface_tension_compute(&s->st, &s->pp.k, &s->p, &s->nl, &s->st_work);
     }
     return 0;

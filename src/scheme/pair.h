@@ -33,4 +33,9 @@ static inline bool pair_of(const kernel *k, double *const x[DIM], vec xi, const 
     return true;
 }
 
+/* A parallel loop over the fluid whose work lies in S_F: S_F is a few layers of a fluid sorted
+ * by cell, so static chunks would give one thread most of it. Each particle must write only
+ * its own entries, so that the result does not depend on the schedule. */
+#define PARALLEL_FOR_OVER_S_F _Pragma("omp parallel for schedule(dynamic, 256)")
+
 #endif

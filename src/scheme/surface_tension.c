@@ -69,7 +69,7 @@ void surface_tension_free(surface_tension_work *w)
 static void interface_and_normals(const surface_tension_params *st, const kernel *k, particles *p,
                                   const neighbour_list *nl, surface_tension_work *w)
 {
-#pragma omp parallel for schedule(static)
+    PARALLEL_FOR_OVER_S_F
     for (size_t i = 0; i < p->n_fluid; i++) {
         double delta = 0.0, band = 0.0;
         vec n = vec_zero();
@@ -123,7 +123,7 @@ static void mirror_into_ghosts(particles *p, surface_tension_work *w)
 static void smoothed_normals(const kernel *k, const particles *p, const neighbour_list *nl,
                              double *const normal[DIM], double *const smooth[DIM])
 {
-#pragma omp parallel for schedule(static)
+    PARALLEL_FOR_OVER_S_F
     for (size_t i = 0; i < p->n_fluid; i++) {
         vec xi = vec_load(p->x, i), sum = vec_scale(vec_load(normal, i), k->norm * p->vol[i]);
         if (p->surface[i] == SURFACE_FREE) {
@@ -151,7 +151,7 @@ static void smoothed_normals(const kernel *k, const particles *p, const neighbou
 static void surface_curvature(const surface_tension_params *st, const kernel *k, const particles *p,
                               const neighbour_list *nl, double *const normal[DIM], double *kappa)
 {
-#pragma omp parallel for schedule(static)
+    PARALLEL_FOR_OVER_S_F
     for (size_t i = 0; i < p->n_fluid; i++) {
         kappa[i] = 0.0;
         if (p->surface[i] != SURFACE_FREE) continue;
@@ -183,7 +183,7 @@ static void band_force(const surface_tension_params *st, const kernel *k, partic
                        const neighbour_list *nl, double *const smooth[DIM],
                        const double *kappa_surface, const double *band_sum)
 {
-#pragma omp parallel for schedule(static)
+    PARALLEL_FOR_OVER_S_F
     for (size_t i = 0; i < p->n_fluid; i++) {
         double kappa = 0.0;
         vec force = vec_zero();
@@ -235,17 +235,15 @@ static void unite(int32_t *parent, int32_t a, int32_t b)
     if (b < a) parent[a] = b;
 }
 
-/* The bodies: the connected sets of interface particles (within 2h), each flagged when a
- * ghost is among its neighbours. */
-static void find_bodies(const kernel *k, const particles *p, const neighbour_list *nl,
-                        surface_tension_work *w)
+void surface_tension_find_bodies(const kernel *k, const particles *p, const neighbour_list *nl,
+                                 surface_tension_work *w)
 {
     for (size_t i = 0; i < p->n_fluid; i++) {
         w->parent[i] = (int32_t)i;
-        w->body[i] = (surface_body){0};
+        w->body[i].at_wall = 0;
     }
     for (size_t i = 0; i < p->n_fluid; i++) {
-        if (p->interface[i] == 0.0) continue;
+        if (p->surface[i] == SURFACE_INTERIOR) continue;
         vec xi = vec_load(p->x, i);
         const int32_t *row = neighbour_row(nl, i);
         for (int32_t m = 0; m < nl->count[i]; m++) {
@@ -253,10 +251,12 @@ static void find_bodies(const kernel *k, const particles *p, const neighbour_lis
             if (!pair_of(k, p->x, xi, row, m, &pr)) continue;
             if (pr.j >= p->n_fluid)
                 w->body[i].at_wall = 1;
-            else if (p->interface[pr.j] > 0.0)
+            else if (p->surface[pr.j] != SURFACE_INTERIOR)
                 unite(w->parent, (int32_t)i, (int32_t)pr.j);
         }
     }
+    for (size_t i = 0; i < p->n_fluid; i++) /* a body is at a wall if any of it is */
+        if (w->body[i].at_wall) w->body[find_root(w->parent, (int32_t)i)].at_wall = 1;
 }
 
 /* In the continuum, the surface force on a closed body of liquid has no resultant and no
@@ -264,18 +264,21 @@ static void find_bodies(const kernel *k, const particles *p, const neighbour_lis
  * resultant in proportion to delta V, the moment as the field delta V (Omega x r) about the
  * body's centre whose moment it is (a rigid rotation's pattern, which adds no resultant). A
  * body whose interface comes within 2h of a wall keeps both: the wall takes the reaction of
- * its contact lines. Serial and in index order, over the interface particles only: the
- * result does not depend on the thread count. */
-static void balance_bodies(const kernel *k, particles *p, const neighbour_list *nl,
-                           surface_tension_work *w)
+ * its contact lines. The bodies are the step's (surface_tension_find_bodies). Serial and in
+ * index order, over the interface particles only: the result does not depend on the thread
+ * count. */
+static void balance_bodies(particles *p, surface_tension_work *w)
 {
-    find_bodies(k, p, nl, w);
     size_t n = p->n_fluid;
+    for (size_t i = 0; i < n; i++) { /* the sums of the stage start at 0 */
+        if (p->interface[i] == 0.0) continue;
+        surface_body *b = &w->body[find_root(w->parent, (int32_t)i)];
+        *b = (surface_body){.at_wall = b->at_wall};
+    }
     for (size_t i = 0; i < n; i++) { /* resultant, weight and centre */
         if (p->interface[i] == 0.0) continue;
         surface_body *b = &w->body[find_root(w->parent, (int32_t)i)];
         double wi = p->interface[i] * p->vol[i];
-        b->at_wall |= w->body[i].at_wall;
         b->force = vec_add(b->force, vec_load(p->st_force, i));
         b->weight += wi;
         b->centre = vec_axpy(b->centre, wi, vec_load(p->x, i));
@@ -310,7 +313,7 @@ void surface_tension_compute(const surface_tension_params *st, const kernel *k, 
     smoothed_normals(k, p, nl, w->normal, w->smooth);
     surface_curvature(st, k, p, nl, w->smooth, w->kappa);
     band_force(st, k, p, nl, w->smooth, w->kappa, w->band_sum);
-    balance_bodies(k, p, nl, w);
+    balance_bodies(p, w);
 }
 
 double surface_tension_power(const particles *p, double *scratch)

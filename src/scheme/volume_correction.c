@@ -37,10 +37,7 @@ static void interior_mismatch(double lattice_sum, particles *p)
  * interior entries and writes only the others, so the loop has no race. */
 static void surface_band_mismatch(const kernel *k, particles *p, const neighbour_list *nl)
 {
-    /* S_F is a few layers of the fluid, which is sorted by cell: in static chunks one thread
-       would get most of it. Each particle writes only its own entry, so the result does not
-       depend on the schedule. */
-#pragma omp parallel for schedule(dynamic, 256)
+    PARALLEL_FOR_OVER_S_F
     for (size_t i = 0; i < p->n_fluid; i++) {
         if (p->surface[i] == SURFACE_INTERIOR) continue;
         vec xi = vec_load(p->x, i);
