@@ -23,23 +23,6 @@
 #include "same_file.h"
 #include "sloshing.h"
 
-/* Runs the case file cases/NAME.ini with the overrides in a new folder (its path in dir, 64
- * bytes); its time series. */
-static void run_case_file(const char *name, const char *const *overrides, int n, table *t,
-                          char dir[64])
-{
-    char path[512], err[1024];
-    snprintf(path, sizeof path, "%s/cases/%s.ini", VCSPH_SOURCE_DIR, name);
-    config cfg;
-    if (config_load(&cfg, path, overrides, n, err, sizeof err)) fail_msg("%s", err);
-    snprintf(dir, 64, "/tmp/vcsph-test-XXXXXX");
-    assert_non_null(mkdtemp(dir));
-    run_options opt = {dir, true};
-    assert_int_equal(simulation_run(&cfg, &opt), RUN_OK);
-    snprintf(path, sizeof path, "%s/timeseries.csv", dir);
-    assert_int_equal(table_read(t, path), 0);
-}
-
 typedef struct {
     double worst;             /* largest |eps_v1| after the first period */
     double worst_period_mean; /* largest |mean of eps_v1 over one period| after the first */
@@ -74,9 +57,9 @@ static void test_inm2_volume_bounded(void **state)
                             "output.checkpoint_every=0", "model.volume_correction=geometric"};
     table with, without;
     char dir[64];
-    run_case_file("inm2", common, 6, &with, dir);
+    run_case_file("inm2", common, 6, dir, &with);
     common[5] = "model.volume_correction=none";
-    run_case_file("inm2", common, 6, &without, dir);
+    run_case_file("inm2", common, 6, dir, &without);
     volume_bounds on = bounds_after_first_period(&with, period);
     volume_bounds off = bounds_after_first_period(&without, period);
     printf("INM2, N = 16, 12 s: max |eps_v1| %.3f %% with the correction, %.3f %% without; "
@@ -129,7 +112,7 @@ static void test_threads_and_mass(void **state)
     table t[2];
     for (int threads = 1; threads <= 2; threads++) {
         omp_set_num_threads(threads);
-        run_case_file("inm2", set, 5, &t[threads - 1], dirs[threads - 1]);
+        run_case_file("inm2", set, 5, dirs[threads - 1], &t[threads - 1]);
         snprintf(path[threads - 1], sizeof path[0], "%s/timeseries.csv", dirs[threads - 1]);
     }
     assert_true(same_file(path[0], path[1]));

@@ -19,8 +19,11 @@
  *                            eps_expected
  *   eta_i64           i64    switching, kind, eta0_regime, switches, n_samples
  *   eta_samples       f64    ETA_HISTORY samples of the adaptive control's running integral
- *   run_f64           f64    energy0, mass0, v0, ediss_period_start, next_series,
- *                            next_snapshot, next_image
+ *   run_f64           f64    mech_energy0, mass0, v0, ediss_period_start,
+ *                            surface_loss_period_start, next_series, next_snapshot,
+ *                            next_image (mech_energy0: ekin + epot + eint at t = 0; the
+ *                            name changed when the surface energy left it, so that an older
+ *                            checkpoint is refused)
  *   run_i64           i64    period, n_snapshots, n_images, speed_warned
  *   csv_sizes         i64    bytes of timeseries.csv, events.csv, dissipation.csv, probes.csv
  *                            (-1: the run does not write it)
@@ -48,9 +51,11 @@
 #define SOLVER_I64 "dim,n_fluid,step,n_edbc"
 #define ETA_F64    "threshold,period,eta,t_last,eps_last,integral,eps_mean,eps_expected"
 #define ETA_I64    "switching,kind,eta0_regime,switches,n_samples"
-#define RUN_F64    "energy0,mass0,v0,ediss_period_start,next_series,next_snapshot,next_image"
-#define RUN_I64    "period,n_snapshots,n_images,speed_warned"
-#define CSV_SIZES  "timeseries,events,dissipation,probes"
+#define RUN_F64                                                                                    \
+    "mech_energy0,mass0,v0,ediss_period_start,surface_loss_period_start,next_series,"              \
+    "next_snapshot,next_image"
+#define RUN_I64   "period,n_snapshots,n_images,speed_warned"
+#define CSV_SIZES "timeseries,events,dissipation,probes"
 
 static const char *const x_names[3] = {"x_0", "x_1", "x_2"};
 static const char *const u_names[3] = {"u_0", "u_1", "u_2"};
@@ -89,9 +94,10 @@ static void f64_groups(run *r, f64_group g[F64_GROUPS])
                         &e->eps_mean, &e->eps_expected}};
     g[2] = (f64_group){"run_f64",
                        RUN_F64,
-                       7,
-                       {&r->energy0, &r->mass0, &r->v0, &r->ediss_period_start, &r->next_series,
-                        &r->next_snapshot, &r->next_image}};
+                       8,
+                       {&r->energy0, &r->mass0, &r->v0, &r->ediss_period_start,
+                        &r->surface_loss_period_start, &r->next_series, &r->next_snapshot,
+                        &r->next_image}};
 }
 
 static void add_particles(item_list *l, const particles *p)
@@ -333,14 +339,23 @@ static int check_state(const run *r, char *err, size_t err_len)
 {
     const solver *s = &r->s;
     const eta_controller *e = &s->eta_control;
-    const double scalars[] = {s->t,           s->last_dt,
-                              s->max_acc,     s->work_in,
-                              s->work_st,     e->threshold,
-                              e->period,      e->t_last,
-                              e->eps_last,    e->integral,
-                              r->energy0,     r->mass0,
-                              r->v0,          r->ediss_period_start,
-                              r->next_series, r->next_snapshot,
+    const double scalars[] = {s->t,
+                              s->last_dt,
+                              s->max_acc,
+                              s->work_in,
+                              s->work_st,
+                              e->threshold,
+                              e->period,
+                              e->t_last,
+                              e->eps_last,
+                              e->integral,
+                              r->energy0,
+                              r->mass0,
+                              r->v0,
+                              r->ediss_period_start,
+                              r->surface_loss_period_start,
+                              r->next_series,
+                              r->next_snapshot,
                               r->next_image};
     const char *why = NULL;
     char health[512], failed[600];

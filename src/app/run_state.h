@@ -25,11 +25,11 @@ typedef struct {
     char *case_text; /* resolved case.ini, also stored in every snapshot and checkpoint */
     csv_file timeseries, events, probes_csv, dissipation;
     probes probes;
-    double energy0; /* ekin + epot + eint (+ esurf) at t = 0 */
+    double energy0; /* ekin + epot + eint at t = 0 */
     /* dissipation per excitation period (theory §10): the period that ends next, and
-       ediss where it started */
+       ediss and the surface's loss beyond its force's work where it started */
     long period;
-    double ediss_period_start;
+    double ediss_period_start, surface_loss_period_start;
     double t_stop; /* the prepared step ends at or before this time */
     double mass0, v0;
     double next_series, next_snapshot, next_image;
