@@ -468,7 +468,8 @@ static void test_breakdown_exits_3(void **state)
 
 /* `vcsph volume` on the snapshots of a run with output.graphical = true prints, for each
  * snapshot, the eps_v1 and eps_gm of the time-series row of the same time: the same
- * definitions computed from the same state (round-off of the printed digits only). */
+ * definitions computed from the same state (round-off of the printed digits only). eps_gm
+ * is Eq. (15)'s ratio of the pixel count to the initial configuration's: exactly 0 at t = 0. */
 static void test_volume_command_matches_series(void **state)
 {
     fixture *fx = *state;
@@ -489,6 +490,7 @@ static void test_volume_command_matches_series(void **state)
     const double *t = table_column(&ts, "t"), *eps_v1 = table_column(&ts, "eps_v1");
     const double *eps_gm = table_column(&ts, "eps_gm");
     assert_true(strncmp(out, "t,eps_v1,eps_gm\n", 16) == 0);
+    assert_true(t[0] == 0.0 && eps_gm[0] == 0.0);
     int rows = 0;
     for (const char *line = next_line(out); line && *line; line = next_line(line)) {
         double tv, e1, egm;

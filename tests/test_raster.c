@@ -234,6 +234,37 @@ static void test_lattice_block(void **state)
         }
 }
 
+/* INM2 3D at N = 8 (cases/inm2-3d.ini): a tank 1 x 1 x 0.1 m, dr = 0.35 / 8, so its lattice has
+ * 23 x 8 x 2 particles of spacings 1/23, dr and 0.05 m: across the width only two particles,
+ * each within 2 h_c of both walls, and no axis but y of spacing dr; the lid is no whole number
+ * of pixels away. With the lattice's cell as each particle's volume and pixels of spacing / k,
+ * the flat lattice reads its cell volume times N to round-off: every cell edge is a pixel edge
+ * and C = 1/2 exactly there. (With images about one wall per axis, V_p = dr^3 and pixels that
+ * fit the box it read -0.62 %: the surface, 0.2 pixel into a row, dropped that row.) */
+static void test_thin_tank_lattice(void **state)
+{
+    (void)state;
+    const double h_dr = 0.35 / 8.0, size[3] = {1.0, 1.0, 0.1};
+    const double spacing[3] = {1.0 / 23.0, h_dr, 0.05};
+    cloud c;
+    cloud_init(&c);
+    for (int k = 0; k < 2; k++)
+        for (int j = 0; j < 8; j++)
+            for (int i = 0; i < 23; i++)
+                cloud_add(&c, (i + 0.5) * spacing[0], (j + 0.5) * spacing[1],
+                          (k + 0.5) * spacing[2]);
+    raster_params rp = raster_params_default(3);
+    rp.particle_volume = spacing[0] * spacing[1] * spacing[2];
+    for (int d = 0; d < 3; d++) rp.spacing[d] = spacing[d];
+    char err[256];
+    double v = -1.0;
+    if (raster_volume(3, c.n, c.x, h_dr, size, &rp, &v, err, sizeof err)) fail_msg("%s", err);
+    double e = v / ((double)c.n * rp.particle_volume) - 1.0;
+    printf("thin tank, 23 x 8 x 2 particles: eps_GM = %+.2e\n", e);
+    assert_close(e, 0.0, 1e-12);
+    cloud_free(&c);
+}
+
 /* ---- a disc (ball) of lattice particles, a lone particle ---------------------------------- */
 
 /* All the lattice points within R = 10 dr of one, in zero gravity: eps_GM within 0.5 % of
@@ -619,6 +650,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_rule_matches_brute_force),
         cmocka_unit_test(test_lattice_block),
+        cmocka_unit_test(test_thin_tank_lattice),
         cmocka_unit_test(test_lattice_disc),
         cmocka_unit_test(test_lone_particle),
         cmocka_unit_test(test_compressed_block),

@@ -50,14 +50,26 @@ void run_event(run *r, const char *what, const char *detail)
     csv_end_row(&r->events);
 }
 
-/* The graphical method, Eq. (15): eps_GM of the current positions (sec. 3.2). */
-static int graphical_error(solver *s, double *eps_gm)
+/* The graphical method, Eq. (15): eps_GM of the current positions (sec. 3.2) against the
+ * initial configuration's count (run_graphical_reference). */
+static int graphical_measure(run *r, double *eps_gm)
 {
+    solver *s = &r->s;
     char err[256];
-    if (volume_graphical(&s->p, s->tank.size, s->dv.dr, s->dv.v0, eps_gm, err, sizeof err) == 0)
+    double volume;
+    if (volume_graphical(&s->p, s->tank.size, &s->dv, &volume, err, sizeof err) == 0) {
+        *eps_gm = graphical_error(volume, r->graphical_volume0);
         return 0;
+    }
     log_error("vcsph: graphical method: %s", err);
     return -1;
+}
+
+int run_graphical_reference(run *r, char *err, size_t err_len)
+{
+    solver *s = &r->s;
+    if (!r->cfg->graphical) return 0;
+    return volume_graphical(&s->p, s->tank.size, &s->dv, &r->graphical_volume0, err, err_len);
 }
 
 /* The energy the liquid stores in its motion, its height and its compression (theory §10). */
@@ -123,7 +135,7 @@ void run_write_series_row(run *r, int with_geometry)
         for (int k = 0; k < 3; k++) csv_put_empty(c);
     }
     double eps_gm;
-    if (with_geometry && r->cfg->graphical && graphical_error(s, &eps_gm) == 0)
+    if (with_geometry && r->cfg->graphical && graphical_measure(r, &eps_gm) == 0)
         csv_put(c, eps_gm);
     else
         csv_put_empty(c);

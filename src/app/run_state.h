@@ -32,6 +32,7 @@ typedef struct {
     double ediss_period_start, surface_loss_period_start;
     double t_stop; /* the prepared step ends at or before this time */
     double mass0, v0;
+    double graphical_volume0; /* the graphical method's volume of the initial lattice */
     double next_series, next_snapshot, next_image;
     int n_images;
     /* snapshot index for the XDMF file */
@@ -86,11 +87,16 @@ static inline double run_period_end(const run *r) { return (double)r->period * r
 #define run_write_dissipation_row DIM_NAME(run_write_dissipation_row)
 #define run_write_snapshot        DIM_NAME(run_write_snapshot)
 #define run_write_image           DIM_NAME(run_write_image)
+#define run_graphical_reference   DIM_NAME(run_graphical_reference)
 
 /* ---- run_outputs.c: the files of a run ---- */
 
 /* OUTDIR/name into buf. */
 void run_out_path(const run *r, char *buf, size_t len, const char *name);
+/* With output.graphical, the graphical method's volume of the particles as solver_init laid
+ * them, the reference of every eps_gm (also on a restart, which rebuilds that lattice first).
+ * Returns 0, or -1 with a message in err. */
+int run_graphical_reference(run *r, char *err, size_t err_len);
 /* A row of events.csv at the current time. */
 void run_event(run *r, const char *what, const char *detail);
 /* Creates the output folder and its files, or for a restarted run (r->resumed) reopens them

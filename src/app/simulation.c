@@ -239,7 +239,9 @@ static int set_up_run(run *r, const config *cfg, const checkpoint_data *cd, char
     memset(r, 0, sizeof *r);
     r->cfg = cfg;
     int status = solver_init(&r->s, cfg, err, err_len);
-    if (status || !cd) return status;
+    if (status) return status;
+    if (run_graphical_reference(r, err, err_len)) return RUN_FAILED;
+    if (!cd) return RUN_OK;
     return restart_load(r, cd, err, err_len) ? RUN_BAD_INPUT : RUN_OK;
 }
 

@@ -20,7 +20,10 @@ int snapshot_volume_dim(const config *cfg, const char *path, const snapshot_info
     if (solver_init(&s, cfg, err, err_len)) return RUN_BAD_INPUT;
     particles *p = &s.p;
     int status = RUN_OK;
-    if (info->n != p->n_fluid) {
+    double initial_volume, volume; /* eps_gm against the initial lattice's count, as a run */
+    if (volume_graphical(p, s.tank.size, &s.dv, &initial_volume, err, err_len)) {
+        status = RUN_FAILED;
+    } else if (info->n != p->n_fluid) {
         snprintf(err, err_len, "%s: %zu particles, its case makes %zu", path, info->n, p->n_fluid);
         status = RUN_BAD_INPUT;
     } else if (snapshot_read_doubles(path, "position", DIM, p->x, info->n, err, err_len) ||
@@ -38,8 +41,10 @@ int snapshot_volume_dim(const config *cfg, const char *path, const snapshot_info
             volume_errors ve;
             volume_compute(p, s.dv.cell_volume, s.scratch, &ve);
             *eps_v1 = ve.eps_v1;
-            if (volume_graphical(p, s.tank.size, s.dv.dr, s.dv.v0, eps_gm, err, err_len))
+            if (volume_graphical(p, s.tank.size, &s.dv, &volume, err, err_len))
                 status = RUN_FAILED;
+            else
+                *eps_gm = graphical_error(volume, initial_volume);
         }
     }
     solver_free(&s);

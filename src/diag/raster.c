@@ -1,7 +1,7 @@
 /* raster: the graphical method, Eq. (15), in 2D and 3D.
  *
  * A pixel (voxel) is liquid when its centre x has
- *   C(x) = sum_j W(|x - x_j|, h_c) dr^n >= 1/2   or lies within r_d of a particle.
+ *   C(x) = sum_j W(|x - x_j|, h_c) V_p >= 1/2   or lies within r_d of a particle.
  * C is the SPH interpolation of the liquid's indicator function (1 inside, 0 outside); the
  * level 1/2 is where that indicator steps, the usual definition of an interface in SPH. It
  * closes the gaps between lattice neighbours and between disordered particles, and it smooths
@@ -15,7 +15,8 @@
  * docs/graphical-method.md compares the rules and gives the figures.
  *
  * The walls are mirrors, as with the ghost particles (theory §5): the particles within 2 h_c
- * of a wall add their images beyond it, so that C reads 1 along a wall as in the interior.
+ * of a wall add their images beyond it, so that C reads 1 along a wall as in the interior; in
+ * a tank narrower than 4 h_c, about both walls.
  *
  * Scatter parallel over layers of the outermost axis (rows in 2D, planes in 3D): every pixel
  * is written by one thread, summing its sources in one fixed order, and the count is an
@@ -36,18 +37,21 @@ raster_params raster_params_default(int dim)
 
 typedef struct {
     int dim;
-    int nn[3];   /* pixels per axis (1 past dim) */
-    double h[3]; /* pixel side per axis, m */
+    int nn[3];      /* pixels per axis (1 past dim) */
+    double h[3];    /* pixel side per axis, m */
+    double size[3]; /* the walls: at 0 and size (nn h, or less when the last layer is cut) */
+    double last[3]; /* the part of the last layer inside the box, in (0, 1] */
     size_t stride[3];
     size_t total;
 } grid;
 
 /* What a particle adds to a pixel at squared distance r2: the Wendland C2 kernel of the solver
- * (theory §1) with smoothing length h_c, times dr^n (`norm` = a_n dr^n), and a mark of 1 when
- * the pixel is within the disc (C >= 1 then, whatever the rest). */
+ * (theory §1) with smoothing length h_c, times the particle volume V_p (`norm` = a_n V_p),
+ * and a mark of 1 when the pixel is within the disc (C >= 1 then, whatever the rest). */
 typedef struct {
     double inv_hc2; /* 1 / h_c^2; 0 without the colour function */
-    double norm;    /* a_n(h_c) dr^n: 7/(4 pi) (dr/h_c)^2 in 2D, 21/(16 pi) (dr/h_c)^3 in 3D */
+    double norm;    /* a_n(h_c) V_p; with V_p = dr^n, 7/(4 pi) (dr/h_c)^2 in 2D, 21/(16 pi)
+                       (dr/h_c)^3 in 3D */
     double disc2;   /* r_d^2 */
 } source_weight;
 
@@ -70,32 +74,33 @@ static inline void pixel_range(double lo, double hi, double h, int n, int *first
     *last = b >= n ? n - 1 : (b < -1.0 ? -1 : (int)b);
 }
 
-/* Particle i and, if it lies within `reach` of a wall, its mirror images about that wall
- * (about two or three walls near an edge or a corner), into img[0..count); returns count. */
+enum { MAX_IMAGES = 27 }; /* 3 per axis: the particle, its image about the low wall, the high */
+
+/* Particle i and its mirror images about every wall within `reach` of it, and about every
+ * pair and triple of such walls of different axes (an edge, a corner), into img[0..count);
+ * returns count. In a tank narrower than 2 reach a particle is near both walls of an axis and
+ * has an image about each, as the solver's ghosts do (tank_make_ghosts). */
 static inline int particle_images(const grid *g, double *const x[3], size_t i, double reach,
-                                  double img[8][3])
+                                  double img[MAX_IMAGES][3])
 {
-    double wall[3] = {0.0, 0.0, 0.0};
-    int near = 0; /* bit d: near the wall of axis d at wall[d] */
-    for (int d = 0; d < g->dim; d++) {
-        double size = g->nn[d] * g->h[d];
-        if (x[d][i] < reach) {
-            near |= 1 << d;
-            wall[d] = 0.0;
-        } else if (x[d][i] > size - reach) {
-            near |= 1 << d;
-            wall[d] = size;
-        }
+    double coord[3][3]; /* per axis: the coordinate itself, then its mirrors */
+    int n_coord[3] = {1, 1, 1};
+    for (int d = 0; d < 3; d++) {
+        double c = d < g->dim ? x[d][i] : 0.0, size = g->size[d];
+        coord[d][0] = c;
+        if (d >= g->dim) continue;
+        if (c < reach) coord[d][n_coord[d]++] = -c;
+        if (c > size - reach) coord[d][n_coord[d]++] = 2.0 * size - c;
     }
     int count = 0;
-    for (int mirror = 0; mirror < (1 << g->dim); mirror++) {
-        if (mirror & ~near) continue;
-        for (int d = 0; d < 3; d++) {
-            double c = d < g->dim ? x[d][i] : 0.0;
-            img[count][d] = (mirror >> d & 1) ? 2.0 * wall[d] - c : c;
-        }
-        count++;
-    }
+    for (int a = 0; a < n_coord[0]; a++)
+        for (int b = 0; b < n_coord[1]; b++)
+            for (int c = 0; c < n_coord[2]; c++) {
+                img[count][0] = coord[0][a];
+                img[count][1] = coord[1][b];
+                img[count][2] = coord[2][c];
+                count++;
+            }
     return count;
 }
 
@@ -112,7 +117,7 @@ static void sources_free(sources *s)
 
 static int sources_make(const grid *g, size_t n, double *const x[3], double reach, sources *s)
 {
-    double img[8][3];
+    double img[MAX_IMAGES][3];
     s->count = 0;
     for (size_t i = 0; i < n; i++) s->count += (size_t)particle_images(g, x, i, reach, img);
     for (int d = 0; d < 3; d++) s->x[d] = malloc((s->count ? s->count : 1) * sizeof(double));
@@ -203,6 +208,19 @@ static int fail(char *err, size_t err_len, const char *msg)
     return -1;
 }
 
+/* The pixels with F >= 1/2 into count[kind], kind's bit d set on the last layer of axis d. */
+static void count_liquid(const grid *g, const float *F, size_t count[8])
+{
+#pragma omp parallel for schedule(static) reduction(+ : count[:8])
+    for (size_t p = 0; p < g->total; p++) {
+        if (!(F[p] >= 0.5f)) continue;
+        int kind = 0;
+        for (int d = 0; d < g->dim; d++)
+            if ((int)(p / g->stride[d] % (size_t)g->nn[d]) == g->nn[d] - 1) kind |= 1 << d;
+        count[kind]++;
+    }
+}
+
 int raster_volume(int dim, size_t n, double *const x[3], double dr, const double size[3],
                   const raster_params *rp, double *volume, char *err, size_t err_len)
 {
@@ -219,19 +237,25 @@ int raster_volume(int dim, size_t n, double *const x[3], double dr, const double
         for (int d = 0; d < dim; d++)
             if (!isfinite(x[d][i])) return fail(err, err_len, "particle position not finite");
 
-    grid g = {.dim = dim, .nn = {1, 1, 1}, .h = {1.0, 1.0, 1.0}};
-    double h = dr / rp->k;
+    grid g = {.dim = dim, .nn = {1, 1, 1}, .h = {1.0, 1.0, 1.0}, .last = {1.0, 1.0, 1.0}};
     g.total = 1;
     for (int d = 0; d < dim; d++) {
         if (!(size[d] > 0.0 && isfinite(size[d])))
             return fail(err, err_len, "tank size must be positive");
-        /* a box within 1e-9 of a whole number of nominal pixels is taken as one */
+        double spacing = rp->spacing[d] > 0.0 ? rp->spacing[d] : dr, h = spacing / rp->k;
+        /* a box within 1e-9 of a whole number of pixels is taken as one */
         double cells = ceil(size[d] / h - 1e-9);
         if (cells < 1.0) cells = 1.0;
         if (cells > INT_MAX / 4 || (double)g.total * cells > (double)(SIZE_MAX / 8))
             return fail(err, err_len, "grid too large (lower k)");
         g.nn[d] = (int)cells;
-        g.h[d] = size[d] / cells;
+        g.size[d] = size[d];
+        if (rp->spacing[d] > 0.0) {
+            g.h[d] = h;
+            g.last[d] = fmin(1.0, size[d] / h - (cells - 1.0));
+        } else {
+            g.h[d] = size[d] / cells;
+        }
         g.stride[d] = g.total;
         g.total *= (size_t)g.nn[d];
     }
@@ -240,10 +264,11 @@ int raster_volume(int dim, size_t n, double *const x[3], double dr, const double
     double hc = rp->smoothing * dr, rd = rp->radius * dr;
     double reach = fmax(2.0 * hc, rd);
     double ratio = hc > 0.0 ? dr / hc : 0.0;
+    double volume_ratio = rp->particle_volume > 0.0 ? rp->particle_volume / pow(dr, dim) : 1.0;
     source_weight sw = {
         .inv_hc2 = hc > 0.0 ? 1.0 / (hc * hc) : 0.0,
-        .norm = dim == 2 ? 7.0 / (4.0 * M_PI) * ratio * ratio
-                         : 21.0 / (16.0 * M_PI) * ratio * ratio * ratio,
+        .norm = volume_ratio * (dim == 2 ? 7.0 / (4.0 * M_PI) * ratio * ratio
+                                         : 21.0 / (16.0 * M_PI) * ratio * ratio * ratio),
         .disc2 = rd * rd,
     };
     float *F = malloc(g.total * sizeof *F);
@@ -253,16 +278,22 @@ int raster_volume(int dim, size_t n, double *const x[3], double dr, const double
         status = scatter(&g, F, &s, reach, &sw);
         sources_free(&s);
     }
-    size_t count = 0;
-    if (!status) {
-#pragma omp parallel for schedule(static) reduction(+ : count)
-        for (size_t p = 0; p < g.total; p++) count += F[p] >= 0.5f;
-    }
+    /* liquid pixels counted per kind, bit d set for the last layer of axis d, whose part
+       inside the box weighs; integers, so the volume is the same for any thread count */
+    size_t count[8] = {0};
+    if (!status) count_liquid(&g, F, count);
     free(F);
     if (status) {
         snprintf(err, err_len, "graphical method: out of memory (%zu pixels)", g.total);
         return -1;
     }
-    *volume = (double)count * pixel_volume;
+    double pixels = 0.0;
+    for (int kind = 0; kind < 1 << dim; kind++) {
+        double weight = 1.0;
+        for (int d = 0; d < dim; d++)
+            if (kind >> d & 1) weight *= g.last[d];
+        pixels += (double)count[kind] * weight;
+    }
+    *volume = pixels * pixel_volume;
     return 0;
 }

@@ -11,8 +11,17 @@ typedef struct {
     int k;            /* pixels per particle spacing: pixel side dr / k (theory §9: k >= 4) */
     double radius;    /* disc (ball) radius / dr: every pixel this close to a particle is
                          liquid; 0: no discs */
-    double smoothing; /* smoothing length / dr of the colour function C = sum_j W_j dr^n;
+    double smoothing; /* smoothing length / dr of the colour function C = sum_j W_j V_p;
                          every pixel with C >= 1/2 is liquid; 0: no colour function */
+    double particle_volume; /* V_p, each particle's volume (m^n, m^2 in 2D); 0: dr^n. The
+                               lattice's cell, whose spacing across a tank that holds no
+                               whole number of dr differs from dr, so that C = 1 inside */
+    double spacing[3];      /* the lattice's spacing per axis (m), the pixel side then being
+                               spacing / k from the wall at 0, so that every cell edge of a
+                               lattice that starts at that wall is a pixel edge and its flat
+                               surface is read where it is; the last layer, cut by the far
+                               wall, counts with its part inside. 0: pixels of about dr / k
+                               sized to fit the box */
 } raster_params;
 
 /* The chosen rule: the colour function of a Wendland C2 kernel of smoothing length dr,
@@ -22,10 +31,10 @@ raster_params raster_params_default(int dim);
 
 /* Covered volume (m^n; m^2 per unit width in 2D) of the n particles at positions
  * x[0..dim)[0..n), rasterised over the tank box [0, size[d]] (walls at 0 and size[d]); the
- * pixels are sized to fit the box exactly, side dr / k or a hair less. The walls act as
- * mirrors, as the ghost particles do (theory §5). eps_GM = volume / (n dr^dim) - 1 (Eq. 15).
- * The result does not depend on the number of threads. Returns 0, or -1 with a message in err
- * (bad argument, grid too large, out of memory). */
+ * pixels are of side spacing / k (rp->spacing) or sized to fit the box, dr / k or a hair less. The
+ * walls act as mirrors, as the ghost particles do (theory §5). eps_GM = volume / (n dr^dim) - 1
+ * (Eq. 15). The result does not depend on the number of threads. Returns 0, or -1 with a message in
+ * err (bad argument, grid too large, out of memory). */
 int raster_volume(int dim, size_t n, double *const x[3], double dr, const double size[3],
                   const raster_params *rp, double *volume, char *err, size_t err_len);
 

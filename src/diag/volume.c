@@ -73,16 +73,17 @@ void volume_rate(const kernel *k, const particles *p, const neighbour_list *nl, 
     out->correction = interior_rate(k, p, nl, p->correction, v0, scratch);
 }
 
-int volume_graphical(const particles *p, const double size[DIM], double dr, double v0,
-                     double *eps_gm, char *err, size_t err_len)
+int volume_graphical(const particles *p, const double size[DIM], const derived *dv, double *volume,
+                     char *err, size_t err_len)
 {
     raster_params rp = raster_params_default(DIM);
-    double *x[3] = {NULL, NULL, NULL}, box[3] = {0.0, 0.0, 0.0}, volume;
+    rp.particle_volume = dv->cell_volume;
+    for (int d = 0; d < DIM; d++) rp.spacing[d] = dv->spacing[d];
+    double dr = dv->dr;
+    double *x[3] = {NULL, NULL, NULL}, box[3] = {0.0, 0.0, 0.0};
     for (int d = 0; d < DIM; d++) {
         x[d] = p->x[d];
         box[d] = size[d];
     }
-    if (raster_volume(DIM, p->n_fluid, x, dr, box, &rp, &volume, err, err_len)) return -1;
-    *eps_gm = volume / v0 - 1.0;
-    return 0;
+    return raster_volume(DIM, p->n_fluid, x, dr, box, &rp, volume, err, err_len) ? -1 : 0;
 }

@@ -4,6 +4,7 @@
 #define VCSPH_VOLUME_H
 
 #include "core/cells.h"
+#include "core/derived.h"
 #include "core/kernel.h"
 #include "core/particles.h"
 #include "diag/freesurface.h"
@@ -35,11 +36,21 @@ void volume_rate(const kernel *k, const particles *p, const neighbour_list *nl, 
 
 #define volume_graphical DIM_NAME(volume_graphical)
 
-/* eps_GM = covered volume / V0 - 1 of the graphical method, Eq. (15), over the tank box
- * [0, size]: the rule of raster_params_default (docs/graphical-method.md). Returns 0, or -1
- * with a message. */
-int volume_graphical(const particles *p, const double size[DIM], double dr, double v0,
-                     double *eps_gm, char *err, size_t err_len);
+/* The volume the graphical method covers, Eq. (15)'s pixel count times the pixel's size, over
+ * the tank box [0, size]: the rule of raster_params_default (docs/graphical-method.md), each
+ * particle of the lattice cell's volume (V0 / N) in the colour function, pixels of the
+ * lattice's spacing / k along each axis (so that the initial lattice's edges are pixel edges).
+ * eps_GM is this over the same count of the initial configuration, minus 1
+ * (graphical_error). Returns 0, or -1 with a message. */
+int volume_graphical(const particles *p, const double size[DIM], const derived *dv, double *volume,
+                     char *err, size_t err_len);
+
+/* eps_GM, Eq. (15): the ratio of two pixel counts, the current one over the initial
+ * configuration's, so that eps_GM(0) = 0 and the method's bias at the surface cancels. */
+static inline double graphical_error(double volume, double initial_volume)
+{
+    return volume / initial_volume - 1.0;
+}
 
 /* Local error eps_Vi = Vgeo_i / dr^n - 1, Vgeo_i = 1 / sum_j W_ij off S_F and dr^n on S_F
  * (theory §9). */
