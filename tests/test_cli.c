@@ -511,9 +511,52 @@ static void test_volume_command_matches_series(void **state)
     assert_int_equal(run_vcsph(fx, (const char *const[]){"volume", "junk.h5", NULL}), 2);
 }
 
+/* A restart measures eps_gm against the initial lattice's count, as the run it continues:
+ * a sloshing run stopped at 0.3 s (its last checkpoint, a period end where every run cuts its
+ * step) and continued to 0.45 s writes the same eps_gm column, to the bit, as the same run
+ * made in one go (its count by then differs from the initial one: a reference taken from the
+ * restarted state would show). */
+static void test_graphical_after_restart(void **state)
+{
+    fixture *fx = *state;
+    char text[1024];
+    snprintf(text, sizeof text, "%s[motion]\ntype = sway\namplitude = 0.02\nperiod = 0.3\n",
+             tiny_case);
+    write_file(fx, "slosh.ini", text);
+    assert_int_equal(
+        run_vcsph(fx, (const char *const[]){"run", "slosh.ini", "--set", "case.t_end=0.3", "--set",
+                                            "output.graphical=true", "--set",
+                                            "output.checkpoint_every=1e-9", "-o", "stopped",
+                                            "--quiet", NULL}),
+        0);
+    assert_int_equal(
+        run_vcsph(fx, (const char *const[]){"run", "--restart", "stopped/checkpoint.h5", "--set",
+                                            "case.t_end=0.45", "--quiet", NULL}),
+        0);
+    assert_int_equal(
+        run_vcsph(fx, (const char *const[]){"run", "slosh.ini", "--set", "output.graphical=true",
+                                            "--set", "case.t_end=0.45", "-o", "whole", "--quiet",
+                                            NULL}),
+        0);
+    table a, b;
+    char path[512];
+    path_in(fx, "stopped/timeseries.csv", path, sizeof path);
+    assert_int_equal(table_read(&a, path), 0);
+    path_in(fx, "whole/timeseries.csv", path, sizeof path);
+    assert_int_equal(table_read(&b, path), 0);
+    assert_int_equal(a.n_rows, b.n_rows);
+    const double *ga = table_column(&a, "eps_gm"), *gb = table_column(&b, "eps_gm");
+    const double *t = table_column(&b, "t");
+    assert_true(t[b.n_rows - 1] > 0.449);
+    assert_true(gb[b.n_rows - 1] != 0.0);
+    for (size_t r = 0; r < a.n_rows; r++) assert_true(ga[r] == gb[r]);
+    table_free(&a);
+    table_free(&b);
+}
+
 int main(void)
 {
-    struct CMUnitTest tests[N_BAD + 4];
+    struct CMUnitTest tests[N_BAD + 5];
     for (size_t k = 0; k < N_BAD; k++)
         tests[k] = (struct CMUnitTest){bad_cases[k].name, test_bad_input, setup, teardown,
                                        (void *)&bad_cases[k]};
@@ -525,5 +568,7 @@ int main(void)
         (struct CMUnitTest)cmocka_unit_test_setup_teardown(test_breakdown_exits_3, setup, teardown);
     tests[N_BAD + 3] = (struct CMUnitTest)cmocka_unit_test_setup_teardown(
         test_volume_command_matches_series, setup, teardown);
-    return _cmocka_run_group_tests("test_cli", tests, N_BAD + 4, NULL, NULL);
+    tests[N_BAD + 4] = (struct CMUnitTest)cmocka_unit_test_setup_teardown(
+        test_graphical_after_restart, setup, teardown);
+    return _cmocka_run_group_tests("test_cli", tests, N_BAD + 5, NULL, NULL);
 }
