@@ -4,16 +4,44 @@
 #define VCSPH_TEST_RUN_CASE_H
 
 #include "app/simulation.h"
+#include "temp_dir.h"
 
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
-/* Runs cfg quietly in a new folder under /tmp (its path in dir, 64 bytes) and reads
- * dir/timeseries.csv into t. */
+/* The folders the runs of this test made: remembered (dir) and removed with everything in them
+ * when the test exits (dir NULL), whether it passed or not, unless VCSPH_KEEP_TEST_OUTPUT is
+ * set (to look at a failed run). */
+static inline void run_case_folders(const char *dir)
+{
+    enum { MAX_FOLDERS = 64 };
+    static char folders[MAX_FOLDERS][64];
+    static int n;
+    if (dir) {
+        if (n < MAX_FOLDERS) snprintf(folders[n++], sizeof folders[0], "%s", dir);
+        return;
+    }
+    const char *keep = getenv("VCSPH_KEEP_TEST_OUTPUT");
+    for (int k = 0; k < n && !(keep && *keep); k++) temp_dir_remove(folders[k]);
+}
+
+static inline void run_case_remove_folders(void) { run_case_folders(NULL); }
+
+/* A new folder for a run under $TMPDIR or /tmp (its path in dir, 64 bytes), removed when the
+ * test exits. */
+static inline void run_case_folder(char dir[64])
+{
+    static bool registered;
+    assert_int_equal(temp_dir_make(dir, 64, "vcsph-test"), 0);
+    if (!registered) registered = atexit(run_case_remove_folders) == 0;
+    run_case_folders(dir);
+}
+
+/* Runs cfg quietly in a new folder (run_case_folder) and reads dir/timeseries.csv into t. */
 static inline void run_case_config(const config *cfg, char dir[64], table *t)
 {
-    snprintf(dir, 64, "/tmp/vcsph-test-XXXXXX");
-    assert_non_null(mkdtemp(dir));
+    run_case_folder(dir);
     run_options opt = {dir, true};
     assert_int_equal(simulation_run(cfg, &opt), RUN_OK);
     char path[128];

@@ -11,6 +11,10 @@
 #include "app/simulation.h"
 #include "core/derived.h"
 
+#include "check.h"
+#include "table.h"
+#include "run_case.h"
+
 #include <dirent.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -61,8 +65,7 @@ static void test_every_case_checks_and_runs(void **state)
         static const char *const tiny[] = {"case.t_end=0.05", "numerics.resolution=8"};
         char err[1024];
         if (config_load(&cfg, path, tiny, 2, err, sizeof err)) fail_msg("%s", err);
-        snprintf(dir, sizeof dir, "/tmp/vcsph-test-XXXXXX");
-        assert_non_null(mkdtemp(dir));
+        run_case_folder(dir);
         run_options opt = {dir, true};
         int status = simulation_run(&cfg, &opt);
         printf("%-16s %dD: checked, 0.05 s at N = 8: exit %d (%s)\n", names[k], cfg.dim, status,

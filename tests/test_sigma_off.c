@@ -31,8 +31,7 @@ static char *final_state(const char *case_file, const char *const *overrides, in
     config cfg;
     char err[1024], dir[64];
     if (config_load(&cfg, case_file, overrides, n_overrides, err, sizeof err)) fail_msg("%s", err);
-    snprintf(dir, sizeof dir, "/tmp/vcsph-test-XXXXXX");
-    assert_non_null(mkdtemp(dir));
+    run_case_folder(dir);
     run_options opt = {dir, true};
     assert_int_equal(simulation_run(&cfg, &opt), RUN_OK);
     char path[128];

@@ -15,6 +15,7 @@
 #include "check.h"
 #include "same_file.h"
 #include "table.h"
+#include "temp_dir.h"
 
 static const double gravity = 9.81, depth = 0.2, rho0 = 1000.0, length = 0.4;
 
@@ -57,13 +58,20 @@ static int run_case(const char *dir, int threads)
     return run_text(still_tank_case, dir, threads);
 }
 
+static char group_dir[200]; /* every run of the group, removed at the end */
+
 static int setup(void **state)
 {
     (void)state;
-    char tmpl[] = "/tmp/vcsph-still-XXXXXX";
-    if (!mkdtemp(tmpl)) return -1;
-    snprintf(out_dir, sizeof out_dir, "%s/run", tmpl);
+    if (temp_dir_make(group_dir, sizeof group_dir, "vcsph-still")) return -1;
+    snprintf(out_dir, sizeof out_dir, "%s/run", group_dir);
     return run_case(out_dir, 2) == RUN_OK ? 0 : -1;
+}
+
+static int teardown(void **state)
+{
+    (void)state;
+    return temp_dir_remove(group_dir);
 }
 
 /* max |u| < 0.05 sqrt(g H): the spurious currents of the ghost-wall corners stay small;
@@ -201,5 +209,5 @@ int main(void)
         cmocka_unit_test(test_thread_count_independent),
         cmocka_unit_test(test_still_tank_3d),
     };
-    return cmocka_run_group_tests(tests, setup, NULL);
+    return cmocka_run_group_tests(tests, setup, teardown);
 }
