@@ -31,10 +31,11 @@ raster_params raster_params_default(int dim);
 
 /* Covered volume (m^n; m^2 per unit width in 2D) of the n particles at positions
  * x[0..dim)[0..n), rasterised over the tank box [0, size[d]] (walls at 0 and size[d]); the
- * pixels are of side spacing / k (rp->spacing) or sized to fit the box, dr / k or a hair less. The
- * walls act as mirrors, as the ghost particles do (theory §5). eps_GM = volume / (n dr^dim) - 1
- * (Eq. 15). The result does not depend on the number of threads. Returns 0, or -1 with a message in
- * err (bad argument, grid too large, out of memory). */
+ * pixels are of side spacing / k (rp->spacing) or sized to fit the box, dr / k or a hair
+ * less. The walls act as mirrors, as the ghost particles do (theory §5). eps_GM (Eq. 15) is
+ * this volume over that of the initial configuration, minus 1 (graphical_error, volume.h).
+ * The result does not depend on the number of threads. Returns 0, or -1 with a message in err
+ * (bad argument, grid too large, out of memory). */
 int raster_volume(int dim, size_t n, double *const x[3], double dr, const double size[3],
                   const raster_params *rp, double *volume, char *err, size_t err_len);
 
