@@ -31,9 +31,9 @@ int tank_make_ghosts(const tank *t, particles *p, double reach);
 void tank_refresh_ghosts(const tank *t, particles *p, vec g_eff, double rho0, double c0);
 
 /* Per-step fields of the ghosts from their sources: eddy viscosity, diffusion coefficient and
- * S_F flag copied; shifting and volume-correction velocities mirrored (free slip); density gradient = mirror
- * of the source's dynamic part plus the hydrostatic gradient rho g_eff / c0^2, consistent with the
- * hydrostatic continuation above. */
+ * S_F flag copied; shifting and volume-correction velocities mirrored (free slip); density gradient
+ * = mirror of the source's dynamic part plus the hydrostatic gradient rho g_eff / c0^2, consistent
+ * with the hydrostatic continuation above. */
 void tank_mirror_step_fields(particles *p, vec g_eff, double c0);
 
 /* A per-particle scalar of the fluid copied to its ghosts (a field that is even across the
