@@ -102,8 +102,8 @@ static void test_shifting_regularises(void **state)
 }
 
 /* Near the free surface the shifting velocity is tangential: no component along the normal
- * of the particle (free surface) or of the surface above it (rest of S_F: the average of its
- * free-surface neighbours' normals), to round-off of |du| (theory §4). */
+ * of the particle (free surface) or of the surface above it (rest of S_F: its nearest free-surface
+ * neighbour's, equidistant ones averaged), to round-off of |du| (theory §4). */
 static void test_no_normal_shifting_at_surface(void **state)
 {
     (void)state;

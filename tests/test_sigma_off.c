@@ -5,7 +5,9 @@
  * before surface tension existed, and written again when the shifting in S_F took the
  * surface's normal (issue 18): built against the commit before that change with only the
  * free-surface files of the change applied (src/diag/freesurface.*, src/scheme/fields.c,
- * src/core/particles.*), so that the surface-tension code of the change was not in it. Each
+ * src/core/particles.*), so that the surface-tension code of the change was not in it; and
+ * written a third time, the same way, when that normal became the nearest free-surface
+ * neighbour's again with equidistant ones averaged (src/diag/freesurface.c alone). Each
  * line is one particle, in C's exact %a notation. */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -32,7 +34,7 @@ static char *final_state(const char *case_file, const char *const *overrides, in
     char err[1024], dir[64];
     if (config_load(&cfg, case_file, overrides, n_overrides, err, sizeof err)) fail_msg("%s", err);
     run_case_folder(dir);
-    run_options opt = {dir, true};
+    run_options opt = {dir, true, false};
     assert_int_equal(simulation_run(&cfg, &opt), RUN_OK);
     char path[128];
     snprintf(path, sizeof path, "%s/snapshots/000001.h5", dir);

@@ -24,8 +24,8 @@ typedef struct {
     double *nu_delta;        /* diffusion coefficient nu^delta of Eq. (5), m^2/s */
     double *lambda;          /* smallest eigenvalue of L, Eq. (10) (fluid) */
     double *normal[DIM];     /* unit normal -L^-1 sum grad W V, out of the fluid (theory §4);
-                                in S_F below the free surface, the surface's: the average of
-                                the free-surface neighbours' normals */
+                                in S_F below the free surface, the nearest free-surface
+                                neighbour's (equidistant ones averaged) */
     double *normal_raw;      /* |L^-1 sum grad W V| before normalising */
     double *kernel_sum;      /* sum_j W_ij, self included: 1 / geometric volume, Eq. (11) */
     double *gamma;           /* Gamma_i = sum_j W_ij V_j, self included, Eq. (A.2) */

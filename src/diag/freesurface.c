@@ -64,6 +64,10 @@ static int covered(const kernel *k, const particles *p, const neighbour_list *nl
     return 0;
 }
 
+/* Two squared distances equal to round-off: mirror images of one configuration give
+ * distances that differ in the last bits (1e-9 relative is 1e-12 m at dr = 1 mm). */
+static inline int is_tie(double r2, double nearest2) { return r2 <= nearest2 * (1.0 + 1e-9); }
+
 void freesurface_detect(const kernel *k, double dr, double normal_reference, particles *p,
                         const neighbour_list *nl)
 {
@@ -85,29 +89,39 @@ void freesurface_detect(const kernel *k, double dr, double normal_reference, par
     }
     /* S_F: the free surface and every fluid particle within 2h of it (ghosts add nothing: a
        mirror image is never closer than its source). Below the free surface, a particle of S_F
-       takes the normal of the surface above it, the kernel-weighted average of its
-       free-surface neighbours' normals: its own measures the holes of its neighbourhood, and
-       the nearest free-surface particle's would depend on the order of the neighbours at a tie
-       and break the mirror symmetries of the flow (theory §4). Only normals of the free
-       surface are read, and only the others' are written. */
+       takes the normal of the surface nearest to it, that of its nearest free-surface
+       neighbour (theory §4): its own measures the holes of its neighbourhood, and an average
+       over all free-surface neighbours cancels in thin jets and sheets, whose two faces point
+       opposite ways. Equidistant ones (a lattice's corners, a mirror-symmetric flow) share
+       the choice equally, so that no neighbour order breaks a symmetry of the flow. Only
+       normals of the free surface are read, and only the others' are written. */
 #pragma omp parallel for schedule(static)
     for (size_t i = 0; i < p->n_fluid; i++) {
         if (p->is_free[i]) {
             p->surface[i] = SURFACE_FREE;
             continue;
         }
-        vec xi = vec_load(p->x, i), sum = vec_zero();
-        int found = 0;
+        vec xi = vec_load(p->x, i);
         const int32_t *row = neighbour_row(nl, i);
+        double nearest2 = INFINITY;
         for (int32_t m = 0; m < nl->count[i]; m++) {
             pair pr;
-            if (!pair_of(k, p->x, xi, row, m, &pr) || pr.j >= p->n_fluid || !p->is_free[pr.j])
-                continue;
-            found = 1;
-            sum = vec_axpy(sum, kernel_w(k, pr.r) * p->vol[pr.j], vec_load(p->normal, pr.j));
+            if (pair_of(k, p->x, xi, row, m, &pr) && pr.j < p->n_fluid && p->is_free[pr.j])
+                nearest2 = fmin(nearest2, pr.r * pr.r);
         }
-        p->surface[i] = found ? SURFACE_REGION : SURFACE_INTERIOR;
+        if (nearest2 == INFINITY) {
+            p->surface[i] = SURFACE_INTERIOR;
+            continue;
+        }
+        p->surface[i] = SURFACE_REGION;
+        vec sum = vec_zero();
+        for (int32_t m = 0; m < nl->count[i]; m++) {
+            pair pr;
+            if (pair_of(k, p->x, xi, row, m, &pr) && pr.j < p->n_fluid && p->is_free[pr.j] &&
+                is_tie(pr.r * pr.r, nearest2))
+                sum = vec_add(sum, vec_load(p->normal, pr.j));
+        }
         double length = vec_norm(sum);
-        if (found && length > 0.0) vec_store(p->normal, i, vec_scale(sum, 1.0 / length));
+        if (length > 0.0) vec_store(p->normal, i, vec_scale(sum, 1.0 / length));
     }
 }
