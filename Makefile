@@ -21,7 +21,7 @@ build: $(BUILD)/CMakeCache.txt
 # The default case: a short sloshing run, then plots of its time series.
 run: deps
 	@$(MAKE) --no-print-directory build
-	$(BUILD)/vcsph run $(CASE) -o $(RUN_DIR)
+	$(BUILD)/vcsph run $(CASE) -o $(RUN_DIR) --overwrite
 	$(BUILD)/vcsph plot $(RUN_DIR)
 	@echo "vcsph: output in $(RUN_DIR) (open $(RUN_DIR)/snapshots.xmf in ParaView; plots in $(RUN_DIR)/images)"
 

@@ -7,7 +7,9 @@
  * free-surface files of the change applied (src/diag/freesurface.*, src/scheme/fields.c,
  * src/core/particles.*), so that the surface-tension code of the change was not in it; and
  * written a third time, the same way, when that normal became the nearest free-surface
- * neighbour's again with equidistant ones averaged (src/diag/freesurface.c alone). Each
+ * neighbour's again with equidistant ones averaged (src/diag/freesurface.c alone), and a
+ * fourth time when the steps began to land on the output times (step_stop and output_due
+ * of src/app/simulation.c alone). Each
  * line is one particle, in C's exact %a notation. */
 #include <setjmp.h>
 #include <stdarg.h>

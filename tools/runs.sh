@@ -11,7 +11,7 @@ vcsph_run() {
   shift
   mkdir -p "$dir"
   local TIMEFORMAT='%R %U %S'
-  { time OMP_NUM_THREADS=${THREADS:-$threads} "${VCSPH:-build/vcsph}" run "$@" -o "$dir" --quiet \
+  { time OMP_NUM_THREADS=${THREADS:-$threads} "${VCSPH:-build/vcsph}" run "$@" -o "$dir" --overwrite --quiet \
       >"$dir/run.txt" 2>&1 || status=$?; } 2>"$dir/time.txt"
   echo $status >"$dir/exit"
   return 0

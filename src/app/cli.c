@@ -7,7 +7,7 @@
 
 void cli_usage(FILE *out)
 {
-    fputs("usage: vcsph run CASE [--set section.key=value]... [-o DIR] [--quiet]\n"
+    fputs("usage: vcsph run CASE [--set section.key=value]... [-o DIR] [--overwrite] [--quiet]\n"
           "       vcsph run --restart OUTDIR/checkpoint.h5 [--set case.t_end=T]\n"
           "                 [--set output.KEY=VALUE]... [--quiet]\n"
           "       vcsph check CASE [--set section.key=value]...\n"
@@ -22,7 +22,10 @@ void cli_usage(FILE *out)
           "          (volume error and eta, energy, density, liquid, dissipation, probes;\n"
           "          the script OUTDIR/images/plot.gp can be edited and rerun)\n"
           "  --set   override any key of the case file (repeatable)\n"
-          "  -o DIR  output directory\n"
+          "  -o DIR  output directory; one run at a time (a second is refused, exit 2), and a\n"
+          "          folder with another run's outputs is refused (exit 2) unless\n"
+          "  --overwrite\n"
+          "          removes that run's files (only the files a run writes) first\n"
           "  --restart OUTDIR/checkpoint.h5\n"
           "          continue the run of a checkpoint (written every output.checkpoint_every\n"
           "          wall-clock seconds, and when SIGTERM or SIGINT stops a run) in its folder,\n"
@@ -72,6 +75,8 @@ static int check_restart(const cli_args *args, char *err, int err_len)
         why = "give no case file with --restart: the run continues the checkpoint's case";
     else if (args->output_dir)
         why = "give no -o with --restart: the run continues in the checkpoint's folder";
+    else if (args->overwrite)
+        why = "give no --overwrite with --restart: the run continues the files of its folder";
     if (why) {
         snprintf(err, (size_t)err_len, "vcsph: %s", why);
         return 2;
@@ -150,9 +155,13 @@ int cli_parse(int argc, char **argv, cli_args *args, char *err, int err_len)
             args->restart_path = value;
         } else if (!strcmp(a, "--quiet") || !strcmp(a, "-q")) {
             args->quiet = true;
+        } else if (!strcmp(a, "--overwrite") && args->command == CLI_RUN) {
+            args->overwrite = true;
         } else if (a[0] == '-') {
             snprintf(err, (size_t)err_len,
-                     "vcsph: unknown option '%s' (allowed: --set, -o, --restart, --quiet)", a);
+                     "vcsph: unknown option '%s' (allowed: --set, -o, --overwrite, --restart, "
+                     "--quiet)",
+                     a);
             return 2;
         } else if (!args->case_path) {
             args->case_path = a;

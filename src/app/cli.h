@@ -20,6 +20,7 @@ typedef struct {
     const char *output_dir;   /* -o, NULL: output.dir of the case */
     const char *restart_path; /* run --restart: the checkpoint to continue */
     bool quiet;
+    bool overwrite; /* run: replace an earlier run's outputs in the folder */
 } cli_args;
 
 /* Parses argv; returns 0, or 2 with a message in err. */

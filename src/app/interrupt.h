@@ -3,10 +3,11 @@
 #ifndef VCSPH_INTERRUPT_H
 #define VCSPH_INTERRUPT_H
 
-/* Installs the handlers (they only record the signal). A second signal of the same kind acts
- * as it would without them: it ends the process at once (the last checkpoint stays whole,
- * checkpoint.h), for a user who does not want to wait for the step to end. */
-void interrupt_install(void);
+/* Installs the handlers (the first signal is only recorded). A second SIGTERM or SIGINT ends
+ * the process at once, for a user who does not want to wait for the step to end: it says so
+ * on stderr, naming checkpoint_path (the last checkpoint stays whole, checkpoint.h), and
+ * exits 128 + the signal's number (130 for SIGINT, 143 for SIGTERM). */
+void interrupt_install(const char *checkpoint_path);
 /* Puts back the handlers that were there before interrupt_install and forgets any signal. */
 void interrupt_restore(void);
 /* The signal received since interrupt_install, or 0. */

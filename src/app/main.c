@@ -107,8 +107,17 @@ static int checkpoint_case(const checkpoint_data *cd, const cli_args *args, conf
     int status = config_load_string(cfg, text, args->restart_path, args->overrides,
                                     args->n_overrides, err, sizeof err);
     free(text);
-    if (status) fprintf(stderr, "vcsph: %s\n", err);
-    return status ? RUN_BAD_INPUT : RUN_OK;
+    if (status) {
+        fprintf(stderr, "vcsph: %s\n", err);
+        return RUN_BAD_INPUT;
+    }
+    /* the run's own c0: `sound_speed = auto` takes the largest |g - a_tank| up to t_end for a
+       motion table, and a later t_end must not change the equation of state of a run under way
+       (a checkpoint without it is older, and its case computes c0 as before) */
+    const checkpoint_array *c0 =
+        checkpoint_find(cd, "sound_speed", CHECKPOINT_F64, 1, NULL, err, sizeof err);
+    if (c0) cfg->sound_speed = ((const double *)c0->data)[0];
+    return RUN_OK;
 }
 
 /* `vcsph run --restart`: the whole checkpoint is read and verified before anything else. */
@@ -125,7 +134,7 @@ static int restart_run(const cli_args *args)
     if (status == RUN_OK) {
         char dir[CONFIG_PATH_MAX];
         folder_of(args->restart_path, dir, sizeof dir);
-        run_options opt = {dir, args->quiet};
+        run_options opt = {dir, args->quiet, false};
         status = simulation_resume(&cfg, &opt, &cd);
     }
     checkpoint_data_free(&cd);
@@ -159,6 +168,6 @@ int main(int argc, char **argv)
     }
     if (args.command == CLI_CHECK) return check_case(&cfg);
     if (args.output_dir) snprintf(cfg.output_dir, sizeof cfg.output_dir, "%s", args.output_dir);
-    run_options opt = {cfg.output_dir, args.quiet};
+    run_options opt = {cfg.output_dir, args.quiet, args.overwrite};
     return simulation_run(&cfg, &opt);
 }

@@ -1,6 +1,5 @@
 /* progress: run-time feedback. */
 #include "app/progress.h"
-#include "core/log.h"
 
 #include <stdio.h>
 #include <time.h>
@@ -13,8 +12,9 @@ double progress_wall_time(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-void progress_start(progress *pr, double t_end, size_t n_particles, long step, bool quiet)
+void progress_start(progress *pr, double t, double t_end, size_t n_particles, long step, bool quiet)
 {
+    pr->t_start = t;
     pr->tty = isatty(STDOUT_FILENO);
     pr->quiet = quiet;
     pr->t_end = t_end;
@@ -40,7 +40,8 @@ void progress_update(progress *pr, double t, long step, bool force)
     long steps = step - pr->step_start;
     double rate = elapsed > 0 ? (double)pr->n_particles * (double)steps / elapsed : 0.0;
     char eta[32], spent[32];
-    format_duration(eta, sizeof eta, t > 0 ? elapsed * (pr->t_end - t) / t : 0.0);
+    double done = t - pr->t_start;
+    format_duration(eta, sizeof eta, done > 0 ? elapsed * (pr->t_end - t) / done : 0.0);
     format_duration(spent, sizeof spent, elapsed);
     char line[200];
     snprintf(line, sizeof line,
@@ -52,7 +53,8 @@ void progress_update(progress *pr, double t, long step, bool force)
         pr->line_width = width;
         fflush(stdout);
     } else {
-        log_info("%s", line);
+        printf("%s\n", line);
+        fflush(stdout);
     }
 }
 

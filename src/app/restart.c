@@ -13,6 +13,8 @@
  *
  * Layout (checkpoint.h, version 2): one dataset each, scalars grouped with their "columns":
  *   case              bytes  the resolved case text (what `vcsph run --restart` runs)
+ *   sound_speed       f64    c0 as the run computed it (a restart keeps it; main.c)
+ *   motion_table      bytes  motion.type = table only: the table's text (motion_table.h)
  *   solver_f64        f64    t, last_dt, max_acc, work_in, work_st
  *   solver_i64        i64    dim, n_fluid, step, n_edbc
  *   eta_f64           f64    threshold, period, eta, t_last, eps_last, integral, eps_mean,
@@ -34,10 +36,11 @@
  *   x_0 .. x_{DIM-1}  f64    n_fluid, positions
  *   u_0 .. u_{DIM-1}  f64    n_fluid, velocities
  *   rho, m            f64    n_fluid */
+#include "app/output_folder.h"
 #include "app/run_state.h"
+#include "core/log.h"
 #include "diag/health.h"
 
-#include <dirent.h>
 #include <errno.h>
 #include <math.h>
 #include <stdbool.h>
@@ -166,6 +169,12 @@ int restart_save(run *r, const char *path, char *err, size_t err_len)
 
     item_list l = {.n = 0};
     add(&l, "case", CHECKPOINT_BYTES, strlen(r->case_text), r->case_text, NULL);
+    /* the sound speed the run started with: `auto` depends on t_end with a motion table, and
+       a restart that extends the run must not change the equation of state */
+    add(&l, "sound_speed", CHECKPOINT_F64, 1, &s->dv.c0, NULL);
+    if (r->cfg->motion_table) /* the table the run read, whatever happens to its file */
+        add(&l, "motion_table", CHECKPOINT_BYTES, strlen(r->cfg->motion_table),
+            r->cfg->motion_table, NULL);
     for (int g = 0; g < F64_GROUPS; g++)
         add(&l, groups[g].name, CHECKPOINT_F64, (size_t)groups[g].n, f64_values[g],
             groups[g].columns);
@@ -422,43 +431,48 @@ int restart_check_outputs(run *r, char *err, size_t err_len)
     return 0;
 }
 
-/* The number in `name` = prefix NNNNNN suffix (six digits), or -1 for any other name. */
-static long numbered(const char *name, const char *prefix, const char *suffix)
+/* The rows of timeseries.csv after `size` bytes (the checkpoint's) whose time is past t, and
+ * the time of the last; 0 if there are none or the file cannot be read. */
+static long rows_after(const char *path, long long size, double t, double *t_last)
 {
-    size_t lp = strlen(prefix);
-    if (strncmp(name, prefix, lp)) return -1;
-    long k = 0;
-    for (int i = 0; i < 6; i++) {
-        char c = name[lp + (size_t)i];
-        if (c < '0' || c > '9') return -1;
-        k = 10 * k + (c - '0');
-    }
-    return strcmp(name + lp + 6, suffix) == 0 ? k : -1;
+    FILE *f = fopen(path, "r");
+    if (!f) return 0;
+    long rows = 0;
+    char line[8192];
+    if (fseeko(f, (off_t)size, SEEK_SET) == 0)
+        while (fgets(line, sizeof line, f)) {
+            double time = strtod(line, NULL);
+            if (!strchr(line, '\n') || !(time > t)) continue;
+            rows++;
+            *t_last = time;
+        }
+    fclose(f);
+    return rows;
 }
 
-/* Removes the files of dir named prefix NNNNNN suffix with NNNNNN >= first. */
-static void remove_numbered(const char *dir, const char *prefix, const char *suffix, long first)
+void restart_report_rewind(run *r)
 {
-    DIR *d = opendir(dir);
-    if (!d) return;
-    char path[CONFIG_PATH_MAX + 300];
-    for (struct dirent *e; (e = readdir(d));) {
-        if (numbered(e->d_name, prefix, suffix) < first) continue;
-        snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
-        remove(path);
-    }
-    closedir(d);
+    if (r->resume_sizes[RUN_CSV_TIMESERIES] < 0) return;
+    char path[CONFIG_PATH_MAX + 64];
+    snprintf(path, sizeof path, "%s/%s", r->opt->output_dir, run_csv_name(RUN_CSV_TIMESERIES));
+    double t_last = r->s.t;
+    long rows = rows_after(path, r->resume_sizes[RUN_CSV_TIMESERIES], r->s.t, &t_last);
+    if (rows == 0) return; /* a finished run, or one stopped by a signal: nothing is lost */
+    log_info("vcsph: the run had gone on after its checkpoint: rewinding to t = %.9g s removes "
+             "%ld rows of timeseries.csv up to t = %.9g s, and the other rows, snapshots and "
+             "images after the checkpoint; the restart computes them again",
+             r->s.t, rows, t_last);
 }
 
 void restart_rewind_outputs(run *r)
 {
     char dir[CONFIG_PATH_MAX + 64];
     snprintf(dir, sizeof dir, "%s/snapshots", r->opt->output_dir);
-    remove_numbered(dir, "", ".h5", r->n_snapshots);
-    remove_numbered(dir, "", ".h5.tmp", 0); /* a write the end of the run cut short */
+    output_folder_remove_numbered(dir, "", ".h5", r->n_snapshots);
+    output_folder_remove_numbered(dir, "", ".h5.tmp", 0); /* a write the end of the run cut short */
     snprintf(dir, sizeof dir, "%s/images", r->opt->output_dir);
-    remove_numbered(dir, "particles_", ".png", r->n_images);
-    remove_numbered(dir, "particles_", ".png.tmp", 0);
+    output_folder_remove_numbered(dir, "particles_", ".png", r->n_images);
+    output_folder_remove_numbered(dir, "particles_", ".png.tmp", 0);
     snprintf(dir, sizeof dir, "%s/checkpoint.h5.tmp", r->opt->output_dir);
     remove(dir);
 }

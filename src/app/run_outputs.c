@@ -1,6 +1,7 @@
 /* run_outputs: the files a run writes (design §1, §4, §5): the output folder, the CSV files
  * and their rows, snapshots with their XDMF index, particle images; opened fresh or rewound
  * for a restart. The time loop (simulation.c) decides when each is due. */
+#include "app/output_folder.h"
 #include "app/run_state.h"
 #include "core/log.h"
 #include "diag/energy.h"
@@ -17,25 +18,11 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
 static const char timeseries_header[] =
     "t,step,dt,n_fluid,eps_v1,eps_v2,eps_v3,eps_gm,eps_sph,mass_err,eta,edbc,n_edbc,"
     "n_free_surface,ekin,epot,eint,work_in,ediss,com_x,com_y,com_z,xmin,xmax,ymax,umax,"
     "rho_min,rho_max,esurf,work_st,deps_u,deps_du,deps_corr,angmom_x,angmom_y,angmom_z";
-
-static int make_dir(const char *path)
-{
-    char buf[CONFIG_PATH_MAX + 32];
-    snprintf(buf, sizeof buf, "%s", path);
-    for (char *q = buf + 1; *q; q++) {
-        if (*q != '/') continue;
-        *q = '\0';
-        if (mkdir(buf, 0777) && errno != EEXIST) return -1;
-        *q = '/';
-    }
-    return mkdir(buf, 0777) && errno != EEXIST ? -1 : 0;
-}
 
 void run_out_path(const run *r, char *buf, size_t len, const char *name)
 {
@@ -181,6 +168,13 @@ void run_write_series_row(run *r, int with_geometry)
         snprintf(detail, sizeof detail, "U_max = %.4g m/s exceeds c0/10 = %.4g m/s (Eq. 6)",
                  dg.umax, 0.1 * s->pp.c0);
         run_event(r, "speed_above_c0_over_10", detail);
+        if (!r->speed_told) { /* the first one on the terminal too; the rest are counted */
+            progress_clear(&r->pr);
+            log_info("vcsph: warning at t = %.4g s: %s; the sound speed may be too low for "
+                     "this flow (later ones: events.csv, counted at the end)",
+                     s->t, detail);
+            r->speed_told = 1;
+        }
     }
     r->speed_warned = fast;
 }
@@ -359,6 +353,7 @@ static int open_files(run *r)
     char path[CONFIG_PATH_MAX + 64];
     run_out_path(r, path, sizeof path, "log.txt");
     if (log_open(path, r->resumed)) return -1;
+    if (r->resumed) restart_report_rewind(r);
     run_out_path(r, path, sizeof path, "case.ini");
     FILE *f = fopen(path, "w");
     if (!f || fputs(r->case_text, f) == EOF || fclose(f)) return -1;
@@ -372,9 +367,7 @@ static int open_files(run *r)
         restart_rewind_outputs(r);
         return rewind_xdmf(r);
     }
-    /* a checkpoint left by an earlier run here would rewind this run's files wrongly */
-    run_out_path(r, path, sizeof path, "checkpoint.h5");
-    return remove(path) == 0 || errno == ENOENT ? 0 : -1;
+    return 0; /* a fresh run starts in a folder without another run's files (simulation.c) */
 }
 
 int run_open_outputs(run *r)
@@ -383,8 +376,8 @@ int run_open_outputs(run *r)
     char images[CONFIG_PATH_MAX + 64];
     run_out_path(r, path, sizeof path, "snapshots");
     run_out_path(r, images, sizeof images, "images");
-    if (make_dir(r->opt->output_dir) || make_dir(path) ||
-        (r->cfg->image_every > 0 && make_dir(images))) {
+    if (output_folder_make(r->opt->output_dir) || output_folder_make(path) ||
+        (r->cfg->image_every > 0 && output_folder_make(images))) {
         log_error("vcsph: cannot create output directory %s: %s", r->opt->output_dir,
                   strerror(errno));
         return -1;

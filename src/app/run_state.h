@@ -22,6 +22,7 @@ typedef struct {
     solver s;
     const config *cfg;
     const run_options *opt;
+    int lock_fd;     /* the output folder's lock (output_folder.h), -1 until taken */
     char *case_text; /* resolved case.ini, also stored in every snapshot and checkpoint */
     csv_file timeseries, events, probes_csv, dissipation;
     probes probes;
@@ -41,6 +42,7 @@ typedef struct {
     double *snapshot_times;
     size_t *snapshot_counts;
     int speed_warned; /* U_max > c0/10 reported and not yet back below */
+    int speed_told;   /* the first such report was printed (this invocation) */
     progress pr;
     double next_checkpoint; /* wall-clock time (progress_wall_time) of the next checkpoint */
     /* a restarted run: the sizes its CSV files had at the checkpoint (-1: not written) */
@@ -119,6 +121,7 @@ int run_write_image(run *r);
 #define restart_load           DIM_NAME(restart_load)
 #define restart_check_outputs  DIM_NAME(restart_check_outputs)
 #define restart_rewind_outputs DIM_NAME(restart_rewind_outputs)
+#define restart_report_rewind  DIM_NAME(restart_report_rewind)
 
 /* Room for n snapshots in the XDMF index. Returns 0 or -1. */
 int run_reserve_snapshots(run *r, int n);
@@ -140,5 +143,8 @@ int restart_check_outputs(run *r, char *err, size_t err_len);
 /* Removes what the run wrote after the checkpoint besides CSV rows: snapshots and images
  * numbered from the checkpoint's counts on, and a half-written checkpoint.h5.tmp. */
 void restart_rewind_outputs(run *r);
+/* Says on the terminal and in log.txt when the rewind drops rows after the checkpoint's time
+ * (a run killed after its last checkpoint), before the files are cut back. */
+void restart_report_rewind(run *r);
 
 #endif

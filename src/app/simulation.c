@@ -2,6 +2,9 @@
  * start and restart; the files themselves are run_outputs.c's. */
 #include "app/simulation.h"
 #include "app/interrupt.h"
+#include "app/motion_table.h"
+#include "app/output_folder.h"
+#include "app/run_summary.h"
 #include "app/progress.h"
 #include "app/run_state.h"
 #include "core/log.h"
@@ -10,7 +13,9 @@
 #include "io/csv.h"
 #include "scheme/solver.h"
 
+#include <errno.h>
 #include <math.h>
+#include <omp.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -50,6 +55,7 @@ static void close_run(run *r)
     free(r->case_text);
     solver_free(&r->s);
     log_close();
+    output_folder_release(r->lock_fd);
 }
 
 /* The first multiple of `every` after t. A time that landed on k every (a period end, the
@@ -59,23 +65,34 @@ static double next_multiple(double t, double every)
     return (floor(t / every + 1e-9) + 1.0) * every;
 }
 
-/* Whether an output with interval `every` (0: every step) is due at t; moves *next on. */
+/* Whether an output with interval `every` (0: every step) is due at t; moves *next on. The
+ * step lands on the multiples of every (step_stop), but a multiple reached as that of another
+ * interval (0.3 as 30 x 0.01, against 3 x 0.1 = 0.30000000000000004) may differ in the last
+ * bit: the same tolerance as next_multiple's counts it as reached. */
 static int output_due(double t, double every, double *next, int last)
 {
     if (every <= 0.0) return 1;
-    if (t < *next && !last) return 0;
+    if (t < *next - 1e-9 * every && !last) return 0;
     *next = next_multiple(t, every);
     return 1;
 }
 
-/* The time the next step may not pass: t_end, or the first period end after t, on which the
- * step lands so that each period's dissipation is measured at its exact ends. */
+/* The time the next step may not pass, on which it lands when it would pass it: t_end; the
+ * first period end after t, so that each period's dissipation is measured at its exact ends;
+ * the next row of timeseries.csv and probes.csv and the next snapshot, so that signals are
+ * sampled at exact multiples of their interval (an FFT needs them evenly spaced). Every time
+ * here is a multiple of a case's interval, the same whether the run started at 0 or at a
+ * checkpoint, and a run extended past t_end lands on t_end as one that ran longer from the
+ * start does when t_end is a multiple of output.timeseries_every. */
 static double step_stop(const run *r)
 {
-    double t_end = r->cfg->t_end;
-    if (!run_has_periods(r)) return t_end;
-    double next = next_multiple(r->s.t, r->cfg->period);
-    return next < t_end ? next : t_end;
+    const config *cfg = r->cfg;
+    double stop = cfg->t_end;
+    if (run_has_periods(r)) stop = fmin(stop, next_multiple(r->s.t, cfg->period));
+    if (cfg->timeseries_every > 0.0)
+        stop = fmin(stop, next_multiple(r->s.t, cfg->timeseries_every));
+    if (cfg->snapshot_every > 0.0) stop = fmin(stop, next_multiple(r->s.t, cfg->snapshot_every));
+    return stop;
 }
 
 /* Writes the rows and snapshots that are due at the current time. */
@@ -122,6 +139,21 @@ static int prepare(run *r)
     return -1;
 }
 
+/* A CSV row that did not reach its file (a full disk) stops the run with the system's reason:
+ * going on would leave a record with a hole in it. */
+static int rows_lost(run *r)
+{
+    for (int k = 0; k < RUN_N_CSV; k++) {
+        int e = csv_error(run_csv(r, k));
+        if (!e) continue;
+        progress_clear(&r->pr);
+        log_error("vcsph: cannot write %s/%s: %s", r->opt->output_dir, run_csv_name(k),
+                  strerror(e));
+        return 1;
+    }
+    return 0;
+}
+
 /* The rest of a step once its RK4 stages are done: the next step's neighbours and geometry
  * (also this state's diagnostics), the control events and the outputs due. A restarted run
  * begins here, with the state of the checkpoint. */
@@ -130,7 +162,7 @@ static int finish_step(run *r)
     if (prepare(r)) return RUN_FAILED;
     control_step(r);
     int last = r->s.t >= r->cfg->t_end;
-    if (outputs_due(r, last)) return RUN_FAILED;
+    if (outputs_due(r, last) || rows_lost(r)) return RUN_FAILED;
     progress_update(&r->pr, r->s.t, r->s.step, last);
     return RUN_OK;
 }
@@ -140,15 +172,18 @@ static const char *signal_name(int sig)
     return sig == SIGTERM ? "SIGTERM" : sig == SIGINT ? "SIGINT" : "a signal";
 }
 
-/* Writes checkpoint.h5 when output.checkpoint_every wall-clock seconds have passed or a
- * signal asked the run to stop, with the state between two steps that a restart starts from
+/* Writes checkpoint.h5 when output.checkpoint_every wall-clock seconds have passed, a signal
+ * asked the run to stop, or the run reached t_end (so that a finished run can be extended
+ * with a later t_end), with the state between two steps that a restart starts from
  * (restart.c). Returns RUN_OK to go on, RUN_INTERRUPTED after a signal. A checkpoint that
  * cannot be written is reported and the run goes on (the last one stays whole). */
 static int checkpoint_due(run *r)
 {
     const config *cfg = r->cfg;
     int sig = interrupt_signal();
-    if (!sig && !(cfg->checkpoint_every > 0.0 && progress_wall_time() >= r->next_checkpoint))
+    bool at_end = r->s.t >= cfg->t_end;
+    if (!sig && !at_end &&
+        !(cfg->checkpoint_every > 0.0 && progress_wall_time() >= r->next_checkpoint))
         return RUN_OK;
     char path[CONFIG_PATH_MAX + 64], err[1024];
     run_out_path(r, path, sizeof path, "checkpoint.h5");
@@ -175,7 +210,7 @@ static int time_loop(run *r)
     const config *cfg = r->cfg;
     char msg[512];
     int status;
-    progress_start(&r->pr, cfg->t_end, s->p.n_fluid, s->step, r->opt->quiet);
+    progress_start(&r->pr, s->t, cfg->t_end, s->p.n_fluid, s->step, r->opt->quiet);
     r->next_checkpoint = progress_wall_time() + cfg->checkpoint_every;
     if (r->resumed) {
         if ((status = finish_step(r))) return status;
@@ -184,7 +219,7 @@ static int time_loop(run *r)
         if (breakdown(r)) return RUN_BREAKDOWN;
         if (prepare(r)) return RUN_FAILED;
         control_step(r);
-        if (outputs_due(r, 0)) return RUN_FAILED;
+        if (outputs_due(r, 0) || rows_lost(r)) return RUN_FAILED;
     }
     while (s->t < cfg->t_end) {
         solver_advance(s, r->t_stop);
@@ -217,9 +252,10 @@ static void log_start(const run *r)
 {
     const config *cfg = r->cfg;
     const derived *dv = &r->s.dv;
-    log_info("vcsph: %s, %dD, %s, %ld particles, dr = %.4g m, c0 = %.4g m/s, t_end = %g s",
+    log_info("vcsph: %s, %dD, %s, %ld particles, dr = %.4g m, c0 = %.4g m/s, t_end = %g s, "
+             "%d threads",
              cfg->name, DIM, config_scheme_name(cfg->scheme), dv->n_fluid, dv->dr, dv->c0,
-             cfg->t_end);
+             cfg->t_end, omp_get_max_threads());
     if (r->s.mo.kind == MOTION_TABLE) /* theory §6: say once how the table was read */
         log_info("vcsph: motion table %s: %zu rows, t in [%g, %g] s, accelerations from a "
                  "natural cubic spline (zero outside the table), largest |g - a_tank| = %.4g m/s^2",
@@ -237,6 +273,7 @@ static int set_up_run(run *r, const config *cfg, const checkpoint_data *cd, char
                       size_t err_len)
 {
     memset(r, 0, sizeof *r);
+    r->lock_fd = -1;
     r->cfg = cfg;
     int status = solver_init(&r->s, cfg, err, err_len);
     if (status) return status;
@@ -254,17 +291,68 @@ int simulation_check_checkpoint_dim(const config *cfg, const checkpoint_data *cd
     return status;
 }
 
-/* A run from t = 0 (cd NULL) or from a checkpoint. */
-static int run_case(const config *cfg, const run_options *opt, const checkpoint_data *cd)
+/* The whole run's summary, line by line, on the terminal and in log.txt. */
+static void log_summary(const char *dir)
+{
+    char text[2048];
+    run_summary(dir, text, sizeof text);
+    for (char *line = strtok(text, "\n"); line; line = strtok(NULL, "\n")) log_info("%s", line);
+}
+
+/* The output folder for this run alone: locked, and for a fresh run free of another run's
+ * files (removed with --overwrite). Returns RUN_OK, or RUN_BAD_INPUT (in use, or holds an
+ * earlier run) or RUN_FAILED (cannot be made or cleared) with a message in err. */
+static int claim_output_folder(run *r, bool fresh, char *err, size_t err_len)
+{
+    const run_options *opt = r->opt;
+    bool busy;
+    r->lock_fd = output_folder_lock(opt->output_dir, &busy, err, err_len);
+    if (r->lock_fd < 0) return busy ? RUN_BAD_INPUT : RUN_FAILED;
+    char found[CONFIG_PATH_MAX + 300];
+    if (!fresh || !output_folder_holds_run(opt->output_dir, found, sizeof found)) return RUN_OK;
+    if (opt->overwrite)
+        return output_folder_clear(opt->output_dir, err, err_len) ? RUN_FAILED : RUN_OK;
+    snprintf(err, err_len,
+             "%s holds another run's outputs (%.100s); give --overwrite to replace them, -o "
+             "for another folder, or --restart with its checkpoint.h5 to continue that run",
+             opt->output_dir, found + strlen(opt->output_dir) + 1);
+    return RUN_BAD_INPUT;
+}
+
+/* The text of the case's motion table, read once: from the file at the start, from the
+ * checkpoint on a restart (motion_table.h). NULL with err[0] = 0 for a case without one. */
+static char *motion_table_text(const config *cfg, const checkpoint_data *cd, char *err,
+                               size_t err_len)
+{
+    err[0] = '\0';
+    if (cfg->motion != MOTION_TABLE) return NULL;
+    if (!cd) return motion_table_read(cfg->motion_file, err, err_len);
+    char *text = checkpoint_text(cd, "motion_table", err, err_len);
+    if (!text)
+        snprintf(err, err_len,
+                 "the checkpoint holds no motion table (written by a vcsph that did not store "
+                 "it): the table it ran with cannot be known");
+    return text;
+}
+
+/* A run from t = 0 (cd NULL) or from a checkpoint, of cfg (the run's own copy: it points
+ * motion.file at the folder's copy of the table). */
+static int run_case_with(config *cfg, const run_options *opt, const checkpoint_data *cd)
 {
     log_set_quiet(opt->quiet);
     run r;
-    char err[1024];
+    char err[CONFIG_PATH_MAX + 1024];
+    const char *table = cfg->motion_table;
     int status = set_up_run(&r, cfg, cd, err, sizeof err);
     r.opt = opt;
+    if (status == RUN_OK) status = claim_output_folder(&r, cd == NULL, err, sizeof err);
     /* a checkpoint that does not fit is refused before any file is touched (design §2) */
     if (status == RUN_OK && cd && restart_check_outputs(&r, err, sizeof err))
         status = RUN_BAD_INPUT;
+    if (status == RUN_OK && table &&
+        motion_table_store(opt->output_dir, table, cfg->motion_file, sizeof cfg->motion_file, err,
+                           sizeof err))
+        status = RUN_FAILED;
     if (status) {
         if (cd)
             log_error("vcsph: cannot restart from the checkpoint in %s: %s", opt->output_dir, err);
@@ -275,7 +363,7 @@ static int run_case(const config *cfg, const run_options *opt, const checkpoint_
     }
     r.case_text = resolved_case_text(cfg);
     if (!r.case_text || run_open_outputs(&r)) {
-        log_error("vcsph: cannot write the outputs in %s", opt->output_dir);
+        log_error("vcsph: cannot write the outputs in %s: %s", opt->output_dir, strerror(errno));
         close_run(&r);
         return RUN_FAILED;
     }
@@ -283,17 +371,41 @@ static int run_case(const config *cfg, const run_options *opt, const checkpoint_
     if (!cd) start_fresh(&r);
     long step0 = r.s.step;
     double wall0 = progress_wall_time();
-    interrupt_install();
+    char checkpoint[CONFIG_PATH_MAX + 64];
+    run_out_path(&r, checkpoint, sizeof checkpoint, "checkpoint.h5");
+    interrupt_install(checkpoint);
     status = time_loop(&r);
     interrupt_restore();
+    log_summary(opt->output_dir);
     /* the steps of this invocation: a restarted run counts from its checkpoint */
     double wall = progress_wall_time() - wall0;
     long steps = r.s.step - step0;
     if (status == RUN_OK)
-        log_info("vcsph: done: %ld steps in %.1f s (%.3g particle-steps/s); output in %s", steps,
-                 wall, wall > 0 ? (double)steps * (double)r.s.p.n_fluid / wall : 0.0,
-                 opt->output_dir);
+        log_info("vcsph: done: %ld steps in %.1f s (%.3g particle-steps/s); output in %s; "
+                 "extend with: vcsph run --restart %s --set case.t_end=LATER",
+                 steps, wall, wall > 0 ? (double)steps * (double)r.s.p.n_fluid / wall : 0.0,
+                 opt->output_dir, checkpoint);
     close_run(&r);
+    return status;
+}
+
+static int run_case(const config *cfg_given, const run_options *opt, const checkpoint_data *cd)
+{
+    config *cfg = malloc(sizeof *cfg);
+    if (!cfg) return RUN_FAILED;
+    *cfg = *cfg_given;
+    char err[CONFIG_PATH_MAX + 256];
+    char *table = motion_table_text(cfg, cd, err, sizeof err);
+    int status = RUN_BAD_INPUT;
+    if (table || !err[0]) {
+        cfg->motion_table = table;
+        status = run_case_with(cfg, opt, cd);
+    } else {
+        log_set_quiet(opt->quiet);
+        log_error("vcsph: %s", err);
+    }
+    free(table);
+    free(cfg);
     return status;
 }
 

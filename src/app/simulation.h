@@ -8,8 +8,9 @@
 #include <stddef.h>
 
 typedef struct {
-    const char *output_dir; /* created if missing */
+    const char *output_dir; /* created if missing; locked while the run writes there */
     bool quiet;             /* no terminal output (tests) */
+    bool overwrite; /* a fresh run removes an earlier run's files there instead of refusing */
 } run_options;
 
 /* Exit statuses (design §2). RUN_INTERRUPTED: SIGTERM or SIGINT stopped the run after a

@@ -164,10 +164,11 @@ static int append_knot(motion *mo, size_t *cap, const double v[4])
     return 0;
 }
 
-/* CSV with header t,x,y[,z]; positions in m. */
-static int read_table(motion *mo, const char *path, char *err, size_t err_len)
+/* CSV with header t,x,y[,z]; positions in m. From the text, if given, else from the file
+ * `path` (named in the messages either way). */
+static int read_table(motion *mo, const char *path, const char *text, char *err, size_t err_len)
 {
-    FILE *f = fopen(path, "r");
+    FILE *f = text ? fmemopen((void *)text, strlen(text), "r") : fopen(path, "r");
     if (!f) {
         snprintf(err, err_len, "%s: cannot open motion table: %s", path, strerror(errno));
         return 2;
@@ -221,7 +222,7 @@ int motion_init(motion *mo, const config *cfg, char *err, size_t err_len)
     mo->phase = cfg->phase;
     mo->duration = cfg->duration;
     if (mo->kind != MOTION_TABLE) return 0;
-    int status = read_table(mo, cfg->motion_file, err, err_len);
+    int status = read_table(mo, cfg->motion_file, cfg->motion_table, err, err_len);
     if (status) motion_free(mo);
     return status;
 }

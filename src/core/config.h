@@ -52,6 +52,10 @@ typedef struct {
     motion_kind motion;
     double amplitude, period, decay, phase, duration;
     char motion_file[CONFIG_PATH_MAX];
+    /* not a key: the table's text when a run holds it (read once at the start, or stored in
+       the checkpoint), parsed instead of motion_file, which an edit could change under a
+       restart; NULL: read motion_file */
+    const char *motion_table;
     /* [model] */
     scheme_kind scheme;
     edbc_mode edbc;

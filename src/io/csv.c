@@ -1,6 +1,7 @@
 /* csv: writers. */
 #include "io/csv.h"
 
+#include <errno.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -8,17 +9,18 @@
 int csv_open(csv_file *c, const char *path, const char *header)
 {
     c->column = 0;
+    c->error = 0;
     c->f = fopen(path, "w");
     if (!c->f) return -1;
     fprintf(c->f, "%s\n", header);
-    fflush(c->f);
-    return 0;
+    return fflush(c->f) == 0 ? 0 : -1;
 }
 
 int csv_reopen(csv_file *c, const char *path, long long size)
 {
     struct stat st;
     c->column = 0;
+    c->error = 0;
     c->f = NULL;
     if (size < 0 || stat(path, &st) || st.st_size < size || truncate(path, (off_t)size)) return -1;
     c->f = fopen(path, "a");
@@ -77,6 +79,6 @@ void csv_put_text(csv_file *c, const char *text)
 void csv_end_row(csv_file *c)
 {
     fputc('\n', c->f);
-    fflush(c->f);
+    if ((fflush(c->f) || ferror(c->f)) && !c->error) c->error = errno ? errno : EIO;
     c->column = 0;
 }

@@ -8,6 +8,7 @@
 typedef struct {
     FILE *f;
     int column; /* columns written in the current row */
+    int error;  /* errno of the first row that could not be written (a full disk), or 0 */
 } csv_file;
 
 /* Creates the file and writes the header line. Returns 0 or -1. */
@@ -24,6 +25,10 @@ void csv_put(csv_file *c, double value); /* %.10g */
 void csv_put_long(csv_file *c, long value);
 void csv_put_empty(csv_file *c);                  /* a quantity not computed in this run */
 void csv_put_text(csv_file *c, const char *text); /* quoted when it holds , or " */
+/* Ends the row and flushes it; a failure is kept in c->error (csv_error). */
 void csv_end_row(csv_file *c);
+/* errno of the first row that did not reach the file, or 0: the caller stops the run rather
+ * than go on without its record. */
+static inline int csv_error(const csv_file *c) { return c->f ? c->error : 0; }
 
 #endif
