@@ -378,6 +378,35 @@ static void test_write_has_every_key(void **state)
     free(text);
 }
 
+/* '#' starts a comment as ';' does: on a line of its own, and after white space in a value;
+ * inside a word it is kept. */
+static void test_hash_comments(void **state)
+{
+    (void)state;
+    const char *text = "# a case\n" MINIMAL "  # indented comment\n"
+                       "[output]  # the outputs\n"
+                       "dir = out/run#2   # the second run\n"
+                       "timeseries_every = 0.5 # s\n"
+                       "[probes]\ngauges = 0.25, 0.5 # two gauges\n";
+    config c;
+    char err[ERR_LEN];
+    int rc = load_text(&c, text, NULL, 0, err);
+    if (rc) print_error("%s\n", err);
+    assert_int_equal(rc, 0);
+    assert_string_equal(c.output_dir, "out/run#2");
+    assert_true(c.timeseries_every == 0.5);
+    assert_int_equal(c.n_gauges, 2);
+    assert_round_trip(&c);
+    /* a path that would read back as a comment is refused, as with ';' */
+    const char *set[] = {"output.dir=out/a #b"};
+    assert_int_equal(load_text(&c, MINIMAL, set, 1, err), 2);
+    assert_contains(err, "output.dir");
+    assert_contains(err, "'#'");
+    const char *first[] = {"output.dir=#b"};
+    assert_int_equal(load_text(&c, MINIMAL, first, 1, err), 2);
+    assert_contains(err, "output.dir");
+}
+
 /* ---- bad input: status 2 and one message with file, line and key ------------------------- */
 
 typedef struct {
@@ -492,6 +521,8 @@ static const bad_case bad_cases[] = {
         "bad.ini:11: ", "probes.pressure", "y = 0.6 m is outside the tank"),
     BAD("pressure points cut by a comment", MINIMAL "[probes]\npressure = 0.5 0.1 ; 0.6 0.1\n",
         "bad.ini:11: ", "probes.pressure", "starts a comment"),
+    BAD("gauges cut by a '#' comment", MINIMAL "[probes]\ngauges = 0.5 # 0.6\n",
+        "bad.ini:11: ", "probes.gauges", "' #' starts a comment"),
     BAD("no multi-line values", MINIMAL "[probes]\ngauges = 0.1\n   0.3\n", "bad.ini:12: ", "'0.3'",
         "expected [section], key = value"),
     BAD("line without '='", MINIMAL "[fluid]\ndensity 1000\n", "bad.ini:11: ", "'density 1000'"),
@@ -647,6 +678,7 @@ int main(void)
         cmocka_unit_test(test_overrides_in_order),
         cmocka_unit_test(test_motion_file_from_current_directory),
         cmocka_unit_test(test_names),
+        cmocka_unit_test(test_hash_comments),
         cmocka_unit_test(test_round_trip_minimal_and_full),
         cmocka_unit_test(test_round_trip_awkward_values),
         cmocka_unit_test(test_liquid_shape),

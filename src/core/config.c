@@ -21,6 +21,10 @@
 #define LINE_SET (-1)
 /* Values longer than this are shortened in messages, so the message itself stays readable. */
 #define SHOWN_VALUE_MAX 80
+/* Both start a comment, at the start of a line or after white space in a value: ';' is the
+ * INI convention, '#' the shell's, which users write by habit. A '#' inside a word (a path
+ * "run#2") is kept. */
+#define COMMENT_CHARS ";#"
 /* Relative slack of the liquid-inside-the-tank checks: 0.1 + 0.2 must fit in a tank 0.3 high. */
 #define FIT_SLACK 1e-12
 
@@ -533,14 +537,21 @@ static bool set_name(parse_ctx *ctx, const key_spec *k, const char *s, char *why
     return true;
 }
 
-/* A path must survive config_write and config_load: no control characters, and no ';' that
- * INI would take for the start of a comment. */
+/* Whether INI reads p, a character of the value s, as the start of an inline comment: a
+ * comment character after white space. config_write puts a space after '=', so a value that
+ * starts with one would read back as a comment too. */
+static bool starts_comment(const char *s, const char *p)
+{
+    return strchr(COMMENT_CHARS, *p) && (p == s || isspace((unsigned char)p[-1]));
+}
+
+/* A path must survive config_write and config_load: no control characters, and no ';' or '#'
+ * that INI would take for the start of a comment. */
 static bool path_is_writable(const char *s)
 {
-    if (s[0] == ';') return false;
     for (const char *p = s; *p; p++) {
         if (iscntrl((unsigned char)*p)) return false;
-        if (*p == ';' && p > s && isspace((unsigned char)p[-1])) return false;
+        if (starts_comment(s, p)) return false;
     }
     return true;
 }
@@ -552,7 +563,9 @@ static bool set_path(parse_ctx *ctx, const key_spec *k, const char *s, char *why
         return false;
     }
     if (!path_is_writable(s)) {
-        snprintf(why, n, "control characters and ';' after a space are not allowed in a path");
+        snprintf(why, n,
+                 "control characters, and ';' or '#' first or after a space (INI reads a "
+                 "comment there), are not allowed in a path");
         return false;
     }
     if (!store_string(field(ctx->cfg, k), k->size, s)) {
@@ -831,7 +844,7 @@ static void check_section_header(parse_ctx *ctx)
     char at[CONFIG_PATH_MAX + 32];
     where(ctx, ctx->lineno, at, sizeof at);
     const char *rest = skip_space(end + 1);
-    if (*rest && *rest != ';' && *rest != '#') {
+    if (*rest && !strchr(COMMENT_CHARS, *rest)) {
         fail(ctx, "%s: unexpected text after [%s]; only a comment may follow a section header", at,
              name);
         return;
@@ -869,13 +882,13 @@ static char *read_line(char *str, int num, void *stream)
 }
 
 /* True when the raw line's value holds an inline comment that starts like a number: inih cuts
- * "0.1 0.2 ; 0.3 0.4" at " ;", which would silently drop probes. */
+ * "0.1 0.2 ; 0.3 0.4" at " ;" (and "0.1 # 0.3" at " #"), which would silently drop probes. */
 static bool list_cut_by_comment(const char *raw)
 {
     const char *p = raw + strcspn(raw, "=:");
     if (!*p) return false;
     for (p++; *p; p++) {
-        if (*p == ';' && isspace((unsigned char)p[-1])) {
+        if (strchr(COMMENT_CHARS, *p) && isspace((unsigned char)p[-1])) {
             const char *q = skip_space(p + 1);
             return isdigit((unsigned char)*q) || (*q && strchr("+-.", *q));
         }
@@ -906,7 +919,7 @@ static int on_key(void *user, const char *section, const char *name, const char 
     }
     if ((k->kind == KIND_GAUGES || k->kind == KIND_POINTS) && list_cut_by_comment(ctx->line)) {
         fail_value(ctx, k, ctx->lineno, value,
-                   "' ;' starts a comment in INI and would drop the numbers after it; "
+                   "' ;' or ' #' starts a comment in INI and would drop the numbers after it; "
                    "write ';' right after a number, as in '0.1 0.2; 0.3 0.4'");
         return 0;
     }
@@ -950,8 +963,8 @@ static void ini_options_set(const ini_options *o)
 static void parse_input(parse_ctx *ctx)
 {
     /* No multi-line values: an indented line must not be glued to the previous value. */
-    static const ini_options ours = {false, true, true, true,         true,
-                                     false, ";#", ";",  CASE_LINE_MAX};
+    static const ini_options ours = {false, true,          true,          true,         true,
+                                     false, COMMENT_CHARS, COMMENT_CHARS, CASE_LINE_MAX};
     ini_options saved = ini_options_get();
     ini_options_set(&ours);
     int rc = ini_parse_stream(read_line, ctx, on_key, ctx);
