@@ -407,6 +407,35 @@ static void test_hash_comments(void **state)
     assert_contains(err, "output.dir");
 }
 
+/* Every missing required key in one message (one line), each with where it belongs. */
+static void test_missing_keys_in_one_message(void **state)
+{
+    (void)state;
+    static const char *const required[] = {"case.t_end", "tank.length", "tank.height",
+                                           "liquid.height", "numerics.resolution"};
+    config c;
+    char err[ERR_LEN];
+    assert_int_equal(load_text(&c, "", NULL, 0, err), 2);
+    for (size_t i = 0; i < sizeof required / sizeof required[0]; i++)
+        assert_contains(err, required[i]);
+    assert_contains(err, "5 required keys missing");
+    assert_contains(err, "section [numerics] missing too");
+    assert_null(strchr(err, '\n'));
+
+    /* two of them, in sections that are there: at the first one's section header */
+    const char *text = "[case]\nt_end = 1\n[tank]\nlength = 1\n[liquid]\n[numerics]\n";
+    assert_int_equal(load_text(&c, text, NULL, 0, err), 2);
+    assert_contains(err, "bad.ini:3: 3 required keys missing: ");
+    assert_contains(err, "tank.height (in [tank], line 3: a length > 0 (m))");
+    assert_contains(err, "liquid.height (in [liquid], line 5");
+    assert_contains(err, "numerics.resolution (in [numerics], line 6");
+    assert_null(strstr(err, "case.t_end"));
+    assert_null(strstr(err, "tank.length"));
+    /* --set may give them */
+    const char *set[] = {"tank.height=1", "liquid.height=0.5", "numerics.resolution=10"};
+    assert_int_equal(load_text(&c, text, set, 3, err), 0);
+}
+
 /* ---- bad input: status 2 and one message with file, line and key ------------------------- */
 
 typedef struct {
@@ -679,6 +708,7 @@ int main(void)
         cmocka_unit_test(test_motion_file_from_current_directory),
         cmocka_unit_test(test_names),
         cmocka_unit_test(test_hash_comments),
+        cmocka_unit_test(test_missing_keys_in_one_message),
         cmocka_unit_test(test_round_trip_minimal_and_full),
         cmocka_unit_test(test_round_trip_awkward_values),
         cmocka_unit_test(test_liquid_shape),

@@ -1029,15 +1029,39 @@ static void apply_override(parse_ctx *ctx, const char *arg)
 
 /* ---- checks and defaults once every key is known ------------------------------------------- */
 
+/* Appends to buf what a missing key is and where it belongs, "; " between two. */
+static void describe_missing(const parse_ctx *ctx, const key_spec *k, char *buf, size_t size)
+{
+    size_t used = strlen(buf);
+    int header = ctx->section_line[section_index(k->section)];
+    char place[64];
+    if (header)
+        snprintf(place, sizeof place, "in [%s], line %d", k->section, header);
+    else
+        snprintf(place, sizeof place, "section [%s] missing too", k->section);
+    snprintf(buf + used, size - used, "%s%s.%s (%s: %s)", used ? "; " : "", k->section, k->name,
+             place, k->allowed);
+}
+
+/* All the missing required keys in one message, so that a user fixes them in one go. One
+ * missing key is blamed where it belongs (fail_key); several at the first one's place. */
 static void check_required(parse_ctx *ctx)
 {
-    for (size_t i = 0; i < N_KEYS && !ctx->failed; i++) {
-        if ((keys[i].flags & KEY_REQUIRED) && !given(ctx, &keys[i])) {
-            char why[256];
-            snprintf(why, sizeof why, "required: %s", keys[i].allowed);
-            fail_key(ctx, &keys[i], why);
-        }
+    const key_spec *missing[N_KEYS];
+    size_t n = 0;
+    for (size_t i = 0; i < N_KEYS; i++)
+        if ((keys[i].flags & KEY_REQUIRED) && !given(ctx, &keys[i])) missing[n++] = &keys[i];
+    if (n == 0) return;
+    char why[1024] = "";
+    if (n == 1) {
+        snprintf(why, sizeof why, "required: %s", missing[0]->allowed);
+        fail_key(ctx, missing[0], why);
+        return;
     }
+    for (size_t i = 0; i < n; i++) describe_missing(ctx, missing[i], why, sizeof why);
+    char at[CONFIG_PATH_MAX + 32];
+    fail(ctx, "%s: %zu required keys missing: %s",
+         where(ctx, ctx->section_line[section_index(missing[0]->section)], at, sizeof at), n, why);
 }
 
 /* Replaces every "<name>" in the output directory by the case name. */
