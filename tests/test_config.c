@@ -53,7 +53,7 @@ static void test_minimal_gives_defaults(void **state)
     int rc = config_load(&c, DATA_DIR "/minimal.ini", NULL, 0, err, sizeof err);
     if (rc) print_error("%s\n", err);
     assert_int_equal(rc, 0);
-    assert_string_equal(c.name, "inm1");
+    assert_string_equal(c.name, "minimal"); /* the file's name without ".ini" */
     assert_int_equal(c.dim, 2);
     assert_true(c.t_end == 1.0);
     assert_true(c.tank_length == 1.0 && c.tank_height == 0.5 && c.tank_width == 1.0);
@@ -80,7 +80,7 @@ static void test_minimal_gives_defaults(void **state)
     assert_true(c.sound_speed == 0.0 && c.cfl == 0.0); /* auto */
     assert_int_equal(c.n_gauges, 0);
     assert_int_equal(c.n_pressure_probes, 0);
-    assert_string_equal(c.output_dir, "out/inm1");
+    assert_string_equal(c.output_dir, "out/minimal");
     assert_true(c.timeseries_every == 0.0 && c.snapshot_every == 0.0 && c.image_every == 0.0);
     assert_true(c.checkpoint_every == 600.0);
     assert_false(c.graphical);
@@ -376,6 +376,46 @@ static void test_write_has_every_key(void **state)
     assert_non_null(strstr(text, "\nlength           = 1 ;"));
     assert_non_null(strstr(text, "\nshape            = box ;"));
     free(text);
+}
+
+/* case.name defaults to the case file's base name without its extension (the characters a
+ * name may not hold made '_'), "case" for a string; a given name wins. output.dir follows. */
+static void test_name_defaults_to_file_name(void **state)
+{
+    (void)state;
+    static const struct {
+        const char *file, *name;
+    } rows[] = {
+        {"sway-a5.ini", "sway-a5"},     {"run.v2.ini", "run.v2"}, {"noext", "noext"},
+        {"odd name!.ini", "odd_name_"}, {"_x.ini", "case-_x"},    {".hidden", "case-.hidden"},
+    };
+    char dir[] = "/tmp/vcsph_test_name_XXXXXX";
+    assert_non_null(mkdtemp(dir));
+    config c;
+    char err[ERR_LEN], path[512], out[600];
+    for (size_t i = 0; i < sizeof rows / sizeof rows[0]; i++) {
+        snprintf(path, sizeof path, "%s/%s", dir, rows[i].file);
+        FILE *f = fopen(path, "w");
+        assert_non_null(f);
+        fputs(MINIMAL, f);
+        fclose(f);
+        int rc = config_load(&c, path, NULL, 0, err, sizeof err);
+        if (rc) print_error("%s\n", err);
+        assert_int_equal(rc, 0);
+        assert_string_equal(c.name, rows[i].name);
+        snprintf(out, sizeof out, "out/%s", rows[i].name);
+        assert_string_equal(c.output_dir, out);
+        const char *named[] = {"case.name=given"};
+        assert_int_equal(config_load(&c, path, named, 1, err, sizeof err), 0);
+        assert_string_equal(c.name, "given");
+        unlink(path);
+    }
+    rmdir(dir);
+    assert_int_equal(load_text(&c, MINIMAL, NULL, 0, err), 0);
+    assert_string_equal(c.name, "case");
+    assert_string_equal(c.output_dir, "out/case");
+    assert_int_equal(load_text(&c, MINIMAL "[case]\nname = named\n", NULL, 0, err), 0);
+    assert_string_equal(c.name, "named");
 }
 
 /* '#' starts a comment as ';' does: on a line of its own, and after white space in a value;
@@ -707,6 +747,7 @@ int main(void)
         cmocka_unit_test(test_overrides_in_order),
         cmocka_unit_test(test_motion_file_from_current_directory),
         cmocka_unit_test(test_names),
+        cmocka_unit_test(test_name_defaults_to_file_name),
         cmocka_unit_test(test_hash_comments),
         cmocka_unit_test(test_missing_keys_in_one_message),
         cmocka_unit_test(test_round_trip_minimal_and_full),

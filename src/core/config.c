@@ -73,7 +73,9 @@ typedef struct {
     const char *name;
     key_kind kind;
     unsigned flags;
-    const char *def; /* default spelled as in a file; unused for required and derived keys */
+    /* Default spelled as in a file. Required keys have none; for derived keys it is the rule,
+     * in words, that `vcsph keys` shows (resolve_defaults applies it). */
+    const char *def;
     size_t offset, size;
     range range;              /* numbers */
     const char *const *words; /* KIND_WORD and KIND_BOOL, NULL-terminated, in enum order */
@@ -126,7 +128,7 @@ static const char *const sections[] = {"case",  "tank",     "liquid", "fluid", "
 
 /* Design §3, in its order (config_write follows this table). */
 static const key_spec keys[] = {
-    KEY("case", "name", KIND_NAME, 0, "inm1", name, ANY, NULL,
+    KEY("case", "name", KIND_NAME, KEY_DERIVED, "<file base name>", name, ANY, NULL,
         "a name of letters, digits, '.', '_' and '-' starting with a letter or digit"),
     KEY("case", "dim", KIND_INT, 0, "2", dim, CLOSED(2, 3), NULL, "2 or 3"),
     KEY("case", "t_end", KIND_REAL, KEY_REQUIRED, NULL, t_end, POSITIVE, NULL, "a time > 0 (s)"),
@@ -142,7 +144,7 @@ static const key_spec keys[] = {
 
     KEY("liquid", "height", KIND_REAL, KEY_REQUIRED, NULL, liquid_height, POSITIVE, NULL,
         "a length > 0 (m)"),
-    KEY("liquid", "length", KIND_REAL, KEY_DERIVED, NULL, liquid_length, POSITIVE, NULL,
+    KEY("liquid", "length", KIND_REAL, KEY_DERIVED, "<tank.length>", liquid_length, POSITIVE, NULL,
         "a length > 0 (m); default: the tank length"),
     KEY("liquid", "x0", KIND_REAL, 0, "0.0", liquid_x0, NON_NEGATIVE, NULL, "a position >= 0 (m)"),
     KEY("liquid", "y0", KIND_REAL, 0, "0.0", liquid_y0, NON_NEGATIVE, NULL, "a position >= 0 (m)"),
@@ -188,8 +190,8 @@ static const key_spec keys[] = {
 
     KEY("numerics", "resolution", KIND_INT, KEY_REQUIRED, NULL, resolution, CLOSED(4, INT_MAX),
         NULL, "an integer >= 4 (particles across liquid.height)"),
-    KEY("numerics", "h_over_dr", KIND_REAL, KEY_DERIVED, NULL, h_over_dr, CLOSED(1.0, 4.0), NULL,
-        "a number in [1, 4]; default 2.0 in 2D, 1.5 in 3D"),
+    KEY("numerics", "h_over_dr", KIND_REAL, KEY_DERIVED, "2.0 in 2D, 1.5 in 3D", h_over_dr,
+        CLOSED(1.0, 4.0), NULL, "a number in [1, 4]; default 2.0 in 2D, 1.5 in 3D"),
     KEY("numerics", "sound_speed", KIND_REAL_AUTO, 0, "auto", sound_speed, POSITIVE, NULL,
         "auto or a speed > 0 (m/s)"),
     KEY("numerics", "cfl", KIND_REAL_AUTO, 0, "auto", cfl, LEFT_OPEN(0.0, 2.0), NULL,
@@ -1085,9 +1087,37 @@ static bool expand_name(char *dir, size_t size, const char *name)
     return store_string(dir, size, out);
 }
 
+/* case.name by default: the case file's base name without its extension, so that a case
+ * without a name writes into out/<its file name>. Characters a name may not hold become '_',
+ * and "case-" goes in front of one that does not start with a letter or digit; a case read
+ * from a string (no file) is "case". */
+static void default_name(const char *path, char *name, size_t size)
+{
+    const char *base = path ? strrchr(path, '/') : NULL;
+    base = base ? base + 1 : path;
+    if (!base || !*base) {
+        snprintf(name, size, "case");
+        return;
+    }
+    const char *dot = strrchr(base, '.');
+    size_t len = dot && dot > base ? (size_t)(dot - base) : strlen(base);
+    size_t used = is_ascii_alnum(base[0]) ? 0 : (size_t)snprintf(name, size, "case-");
+    for (size_t i = 0; i < len && used + 1 < size; i++) {
+        char c = base[i];
+        name[used++] = is_ascii_alnum(c) || strchr("._-", c) ? c : '_';
+    }
+    name[used] = '\0';
+}
+
 static void resolve_defaults(parse_ctx *ctx)
 {
     config *cfg = ctx->cfg;
+    const key_spec *name = key_of("case", "name");
+    if (!given(ctx, name)) {
+        char text[CONFIG_NAME_MAX];
+        default_name(ctx->case_path, text, sizeof text);
+        if (!apply(ctx, name, text, 0)) return; /* cannot happen: default_name makes a name */
+    }
     if (!given(ctx, key_of("liquid", "length"))) cfg->liquid_length = cfg->tank_length;
     if (!given(ctx, key_of("numerics", "h_over_dr"))) cfg->h_over_dr = cfg->dim == 3 ? 1.5 : 2.0;
     /* the scheme-dependent defaults (docs/volume-correction.md, "Defaults") */

@@ -79,11 +79,14 @@ typedef struct {
 
 /* Loads and validates a case file, then applies overrides "section.key=value" (from --set)
  * in order. On failure returns 2 and writes one message into err naming file, line, key and
- * what is allowed; cfg is then unspecified. Returns 0 on success. */
+ * what is allowed (every missing required key at once); cfg is then unspecified. Returns 0 on
+ * success. case.name defaults to the file's base name without its extension. Both ';' and '#'
+ * start a comment (docs/case-file.md). */
 int config_load(config *cfg, const char *path, const char *const *overrides, int n_overrides,
                 char *err, size_t err_len);
 
-/* Same, from a string (tests, fuzzing); `origin` names it in messages. */
+/* Same, from a string (tests, fuzzing, a checkpoint's case); `origin` names it in messages.
+ * Without a file to name it, case.name defaults to "case". */
 int config_load_string(config *cfg, const char *text, const char *origin,
                        const char *const *overrides, int n_overrides, char *err, size_t err_len);
 
