@@ -80,6 +80,7 @@ typedef struct {
     range range;              /* numbers */
     const char *const *words; /* KIND_WORD and KIND_BOOL, NULL-terminated, in enum order */
     const char *allowed;      /* "must be <allowed>" in messages, the comment in config_write */
+    const char *meaning;      /* one line for `vcsph keys` and docs/case-file.md (no tab) */
 } key_spec;
 
 #define ANY                                                                                        \
@@ -106,10 +107,10 @@ typedef struct {
     {                                                                                              \
         lo, hi, true, false                                                                        \
     }
-#define KEY(sec, nam, kind, flags, def, field, rng, words, allowed)                                \
+#define KEY(sec, nam, kind, flags, def, field, rng, words, allowed, meaning)                       \
     {                                                                                              \
         sec, nam, kind, flags, def, offsetof(config, field), sizeof(((config *)0)->field), rng,    \
-            words, allowed                                                                         \
+            words, allowed, meaning                                                                \
     }
 
 static const char *const bool_words[] = {"false", "true", NULL};
@@ -129,92 +130,122 @@ static const char *const sections[] = {"case",  "tank",     "liquid", "fluid", "
 /* Design §3, in its order (config_write follows this table). */
 static const key_spec keys[] = {
     KEY("case", "name", KIND_NAME, KEY_DERIVED, "<file base name>", name, ANY, NULL,
-        "a name of letters, digits, '.', '_' and '-' starting with a letter or digit"),
-    KEY("case", "dim", KIND_INT, 0, "2", dim, CLOSED(2, 3), NULL, "2 or 3"),
-    KEY("case", "t_end", KIND_REAL, KEY_REQUIRED, NULL, t_end, POSITIVE, NULL, "a time > 0 (s)"),
+        "a name of letters, digits, '.', '_' and '-' starting with a letter or digit",
+        "name of the case: titles, and <name> in output.dir"),
+    KEY("case", "dim", KIND_INT, 0, "2", dim, CLOSED(2, 3), NULL, "2 or 3",
+        "number of space dimensions"),
+    KEY("case", "t_end", KIND_REAL, KEY_REQUIRED, NULL, t_end, POSITIVE, NULL, "a time > 0 (s)",
+        "simulated time at which the run ends"),
     KEY("case", "experiment_dissipation", KIND_REAL, 0, "0.0", experiment_dissipation, NON_NEGATIVE,
-        NULL, "a number >= 0: the measured P/dW (P/dE_P with motion.decay > 0); 0 = none"),
+        NULL, "a number >= 0: the measured P/dW (P/dE_P with motion.decay > 0); 0 = none",
+        "measured dissipation per period, drawn as a line by vcsph plot"),
 
     KEY("tank", "length", KIND_REAL, KEY_REQUIRED, NULL, tank_length, POSITIVE, NULL,
-        "a length > 0 (m)"),
+        "a length > 0 (m)", "L: the tank's inner length along x"),
     KEY("tank", "height", KIND_REAL, KEY_REQUIRED, NULL, tank_height, POSITIVE, NULL,
-        "a length > 0 (m)"),
+        "a length > 0 (m)", "D: the tank's inner height along y"),
     KEY("tank", "width", KIND_REAL, 0, "1.0", tank_width, POSITIVE, NULL,
-        "a length > 0 (m; 3D only)"),
+        "a length > 0 (m; 3D only)",
+        "W: the tank's inner width along z (2D results are per unit width)"),
 
     KEY("liquid", "height", KIND_REAL, KEY_REQUIRED, NULL, liquid_height, POSITIVE, NULL,
-        "a length > 0 (m)"),
+        "a length > 0 (m)",
+        "H: the filling height; numerics.resolution counts particles across it"),
     KEY("liquid", "length", KIND_REAL, KEY_DERIVED, "<tank.length>", liquid_length, POSITIVE, NULL,
-        "a length > 0 (m); default: the tank length"),
-    KEY("liquid", "x0", KIND_REAL, 0, "0.0", liquid_x0, NON_NEGATIVE, NULL, "a position >= 0 (m)"),
-    KEY("liquid", "y0", KIND_REAL, 0, "0.0", liquid_y0, NON_NEGATIVE, NULL, "a position >= 0 (m)"),
+        "a length > 0 (m); default: the tank length", "length along x of the liquid box at t = 0"),
+    KEY("liquid", "x0", KIND_REAL, 0, "0.0", liquid_x0, NON_NEGATIVE, NULL, "a position >= 0 (m)",
+        "x of the liquid box's left side at t = 0"),
+    KEY("liquid", "y0", KIND_REAL, 0, "0.0", liquid_y0, NON_NEGATIVE, NULL, "a position >= 0 (m)",
+        "y of the liquid box's bottom at t = 0 (> 0 lifts it off the floor)"),
     KEY("liquid", "shape", KIND_WORD, 0, "box", liquid_shape, ANY, liquid_shape_words,
-        "one of box | ellipse (the ellipse, or ellipsoid, inscribed in the box)"),
+        "one of box | ellipse (the ellipse, or ellipsoid, inscribed in the box)",
+        "the liquid at t = 0: the whole box, or the ellipse inscribed in it"),
 
     KEY("fluid", "density", KIND_REAL, 0, "1000.0", density, POSITIVE, NULL,
-        "a density > 0 (kg/m^3)"),
+        "a density > 0 (kg/m^3)", "rho0: reference density of the liquid"),
     KEY("fluid", "viscosity", KIND_REAL, 0, "1.0e-6", viscosity, POSITIVE, NULL,
-        "a kinematic viscosity > 0 (m^2/s)"),
+        "a kinematic viscosity > 0 (m^2/s)", "nu: kinematic viscosity of the liquid"),
     KEY("fluid", "surface_tension", KIND_REAL, 0, "0.0", surface_tension, NON_NEGATIVE, NULL,
-        "a surface tension >= 0 (N/m; 0 = off)"),
+        "a surface tension >= 0 (N/m; 0 = off)",
+        "sigma: surface tension coefficient of the free surface"),
     KEY("fluid", "gravity", KIND_REAL, 0, "9.81", gravity, NON_NEGATIVE, NULL,
-        "an acceleration >= 0 (m/s^2, along -y)"),
+        "an acceleration >= 0 (m/s^2, along -y)", "g: magnitude of gravity, pointing along -y"),
 
     KEY("motion", "type", KIND_WORD, 0, "none", motion, ANY, motion_words,
-        "one of none | sway | heave | table"),
+        "one of none | sway | heave | table",
+        "prescribed tank motion: none, sway (x), heave (y) or a table"),
     KEY("motion", "amplitude", KIND_REAL, 0, "0.0", amplitude, NON_NEGATIVE, NULL,
-        "a length >= 0 (m)"),
+        "a length >= 0 (m)", "A: amplitude of the sway or heave displacement"),
     KEY("motion", "period", KIND_REAL, 0, "0.0", period, NON_NEGATIVE, NULL,
-        "a time >= 0 (s), > 0 when type is sway or heave"),
-    KEY("motion", "decay", KIND_REAL, 0, "0.0", decay, NON_NEGATIVE, NULL, "a rate >= 0 (1/s)"),
-    KEY("motion", "phase", KIND_REAL, 0, "0.0", phase, ANY, NULL, "an angle (rad)"),
+        "a time >= 0 (s), > 0 when type is sway or heave", "T: period of the sway or heave motion"),
+    KEY("motion", "decay", KIND_REAL, 0, "0.0", decay, NON_NEGATIVE, NULL, "a rate >= 0 (1/s)",
+        "l: the amplitude decays as A exp(-l t)"),
+    KEY("motion", "phase", KIND_REAL, 0, "0.0", phase, ANY, NULL, "an angle (rad)",
+        "phi: phase of the motion at t = 0, added to 2 pi t / T"),
     KEY("motion", "duration", KIND_REAL, 0, "0.0", duration, NON_NEGATIVE, NULL,
-        "a time >= 0 (s; 0 = whole run)"),
+        "a time >= 0 (s; 0 = whole run)",
+        "time after which the tank stops accelerating (keeps its velocity)"),
     KEY("motion", "file", KIND_PATH, 0, "", motion_file, ANY, NULL,
-        "a readable CSV file t,x,y[,z] (required when type = table)"),
+        "a readable CSV file t,x,y[,z] (required when type = table)",
+        "CSV of the tank displacement t,x,y[,z] for type = table"),
 
     KEY("model", "scheme", KIND_WORD, 0, "delta-plus-ale", scheme, ANY, scheme_words,
-        "one of standard | delta | delta-plus | delta-ale | delta-plus-ale"),
+        "one of standard | delta | delta-plus | delta-ale | delta-plus-ale",
+        "SPH model of the paper's Table 1"),
     KEY("model", "edbc", KIND_WORD, 0, "auto", edbc, ANY, edbc_words,
-        "one of auto | true | false | with-eta0 (auto: with-eta0 for delta-plus-ale, else false)"),
+        "one of auto | true | false | with-eta0 (auto: with-eta0 for delta-plus-ale, else false)",
+        "EdBC of Eq. (9): p = 0, rho = rho0 on thin jets and drops"),
     KEY("model", "volume_correction", KIND_WORD, 0, "auto", volume_correction, ANY,
         volume_correction_words,
-        "one of auto | none | geometric (auto: geometric for delta-plus-ale, else none)"),
+        "one of auto | none | geometric (auto: geometric for delta-plus-ale, else none)",
+        "vcsph's geometric volume correction (moves particles)"),
     KEY("model", "eta_threshold", KIND_REAL, 0, "0.01", eta_threshold, OPEN(0.0, 1.0), NULL,
-        "a number in (0, 1)"),
+        "a number in (0, 1)", "|eps_v1| at which delta-plus-ALE switches eta"),
     KEY("model", "eta_control", KIND_WORD, 0, "threshold", eta_control, ANY, eta_control_words,
-        "one of threshold | adaptive"),
-    KEY("model", "les", KIND_BOOL, 0, "true", les, ANY, bool_words, "true or false"),
+        "one of threshold | adaptive",
+        "how delta-plus-ALE sets eta: the paper's switch or vcsph's adaptive control"),
+    KEY("model", "les", KIND_BOOL, 0, "true", les, ANY, bool_words, "true or false",
+        "Smagorinsky eddy viscosity (Eq. 4) with van Driest wall damping"),
     KEY("model", "wall", KIND_WORD, 0, "no-slip", wall, ANY, wall_words,
-        "one of no-slip | free-slip"),
+        "one of no-slip | free-slip", "velocity condition of the walls for the viscous term"),
 
     KEY("numerics", "resolution", KIND_INT, KEY_REQUIRED, NULL, resolution, CLOSED(4, INT_MAX),
-        NULL, "an integer >= 4 (particles across liquid.height)"),
+        NULL, "an integer >= 4 (particles across liquid.height)",
+        "N = H / dr: particles across the filling height"),
     KEY("numerics", "h_over_dr", KIND_REAL, KEY_DERIVED, "2.0 in 2D, 1.5 in 3D", h_over_dr,
-        CLOSED(1.0, 4.0), NULL, "a number in [1, 4]; default 2.0 in 2D, 1.5 in 3D"),
+        CLOSED(1.0, 4.0), NULL, "a number in [1, 4]; default 2.0 in 2D, 1.5 in 3D",
+        "smoothing length over particle spacing (support radius 2h)"),
     KEY("numerics", "sound_speed", KIND_REAL_AUTO, 0, "auto", sound_speed, POSITIVE, NULL,
-        "auto or a speed > 0 (m/s)"),
+        "auto or a speed > 0 (m/s)",
+        "c0 of the equation of state; auto: 10 sqrt(2 g_max H) (Eq. 6)"),
     KEY("numerics", "cfl", KIND_REAL_AUTO, 0, "auto", cfl, LEFT_OPEN(0.0, 2.0), NULL,
-        "auto or a number in (0, 2]"),
+        "auto or a number in (0, 2]",
+        "K_c of the acoustic time step dt = K_c h / c0 (Eq. 8); auto: Table 1"),
     KEY("numerics", "density_bound", KIND_REAL, 0, "0.2", density_bound, OPEN(0.0, 1.0), NULL,
-        "a fraction in (0, 1): a density outside rho0 (1 +- bound) is a breakdown"),
+        "a fraction in (0, 1): a density outside rho0 (1 +- bound) is a breakdown",
+        "how far a density may stray from rho0 before the run stops (exit 3)"),
 
     KEY("probes", "gauges", KIND_GAUGES, 0, "", gauges, ANY, NULL,
-        "x positions (m) inside the tank, separated by commas or spaces"),
+        "x positions (m) inside the tank, separated by commas or spaces",
+        "x of wave gauges: liquid depth on a vertical line, into probes.csv"),
     KEY("probes", "pressure", KIND_POINTS, 0, "", pressure_probes, ANY, NULL,
-        "points 'x y[ z]' (m) inside the tank, separated by ';'"),
+        "points 'x y[ z]' (m) inside the tank, separated by ';'",
+        "points where the SPH pressure is sampled, into probes.csv"),
 
     KEY("output", "dir", KIND_PATH, KEY_NOT_EMPTY, "out/<name>", output_dir, ANY, NULL,
-        "a directory path ('<name>' stands for case.name)"),
+        "a directory path ('<name>' stands for case.name)",
+        "output directory of the run (-o overrides it)"),
     KEY("output", "timeseries_every", KIND_REAL, 0, "0.0", timeseries_every, NON_NEGATIVE, NULL,
-        "a time >= 0 (s; 0 = every step)"),
+        "a time >= 0 (s; 0 = every step)",
+        "simulated time between rows of timeseries.csv and probes.csv"),
     KEY("output", "snapshot_every", KIND_REAL, 0, "0.0", snapshot_every, NON_NEGATIVE, NULL,
-        "a time >= 0 (s; 0 = none)"),
+        "a time >= 0 (s; 0 = none)", "simulated time between HDF5 snapshots"),
     KEY("output", "image_every", KIND_REAL, 0, "0.0", image_every, NON_NEGATIVE, NULL,
-        "a time >= 0 (s; 0 = none)"),
+        "a time >= 0 (s; 0 = none)", "simulated time between particle images"),
     KEY("output", "checkpoint_every", KIND_REAL, 0, "600", checkpoint_every, NON_NEGATIVE, NULL,
-        "a wall-clock time >= 0 (s; 0 = none)"),
-    KEY("output", "graphical", KIND_BOOL, 0, "false", graphical, ANY, bool_words, "true or false"),
+        "a wall-clock time >= 0 (s; 0 = none)", "wall-clock time between checkpoints"),
+    KEY("output", "graphical", KIND_BOOL, 0, "false", graphical, ANY, bool_words, "true or false",
+        "also compute eps_gm (Eq. 15) at every time-series row (costly)"),
 };
 #define N_KEYS (sizeof keys / sizeof keys[0])
 
@@ -1328,6 +1359,22 @@ void config_write(const config *cfg, FILE *out)
         }
         kinds[k->kind].format(cfg, k, value, sizeof value);
         fprintf(out, "%-16s = %s ; %s\n", k->name, value, k->allowed);
+    }
+}
+
+/* The default column of `vcsph keys`: the default as a file spells it, the rule of a derived
+ * default, or "required". */
+static const char *key_default_text(const key_spec *k)
+{
+    return (k->flags & KEY_REQUIRED) ? "required" : k->def;
+}
+
+void config_write_keys(FILE *out)
+{
+    for (size_t i = 0; i < N_KEYS; i++) {
+        const key_spec *k = &keys[i];
+        fprintf(out, "%s.%s\t%s\t%s\t%s\n", k->section, k->name, key_default_text(k), k->allowed,
+                k->meaning);
     }
 }
 

@@ -94,6 +94,12 @@ int config_load_string(config *cfg, const char *text, const char *origin,
  * that config_load reads back to the same struct. */
 void config_write(const config *cfg, FILE *out);
 
+/* Writes every key of the case file, one line each, in the order of config_write, as four
+ * fields separated by tabs: section.key, default (as a file spells it; "<...>" for a default
+ * computed from something else, "required" for a key without one, empty for an empty
+ * default), what is allowed, and its meaning. `vcsph keys` prints it. */
+void config_write_keys(FILE *out);
+
 /* The spellings of the case file (design §3), e.g. "delta-plus-ale", "with-eta0". */
 const char *config_scheme_name(scheme_kind s);
 const char *config_motion_name(motion_kind m);
