@@ -53,7 +53,7 @@ static void test_minimal_gives_defaults(void **state)
     int rc = config_load(&c, DATA_DIR "/minimal.ini", NULL, 0, err, sizeof err);
     if (rc) print_error("%s\n", err);
     assert_int_equal(rc, 0);
-    assert_string_equal(c.name, "inm1");
+    assert_string_equal(c.name, "minimal"); /* the file's name without ".ini" */
     assert_int_equal(c.dim, 2);
     assert_true(c.t_end == 1.0);
     assert_true(c.tank_length == 1.0 && c.tank_height == 0.5 && c.tank_width == 1.0);
@@ -80,7 +80,7 @@ static void test_minimal_gives_defaults(void **state)
     assert_true(c.sound_speed == 0.0 && c.cfl == 0.0); /* auto */
     assert_int_equal(c.n_gauges, 0);
     assert_int_equal(c.n_pressure_probes, 0);
-    assert_string_equal(c.output_dir, "out/inm1");
+    assert_string_equal(c.output_dir, "out/minimal");
     assert_true(c.timeseries_every == 0.0 && c.snapshot_every == 0.0 && c.image_every == 0.0);
     assert_true(c.checkpoint_every == 600.0);
     assert_false(c.graphical);
@@ -378,6 +378,104 @@ static void test_write_has_every_key(void **state)
     free(text);
 }
 
+/* case.name defaults to the case file's base name without its extension (the characters a
+ * name may not hold made '_'), "case" for a string; a given name wins. output.dir follows. */
+static void test_name_defaults_to_file_name(void **state)
+{
+    (void)state;
+    static const struct {
+        const char *file, *name;
+    } rows[] = {
+        {"sway-a5.ini", "sway-a5"},     {"run.v2.ini", "run.v2"}, {"noext", "noext"},
+        {"odd name!.ini", "odd_name_"}, {"_x.ini", "case-_x"},    {".hidden", "case-.hidden"},
+    };
+    char dir[] = "/tmp/vcsph_test_name_XXXXXX";
+    assert_non_null(mkdtemp(dir));
+    config c;
+    char err[ERR_LEN], path[512], out[600];
+    for (size_t i = 0; i < sizeof rows / sizeof rows[0]; i++) {
+        snprintf(path, sizeof path, "%s/%s", dir, rows[i].file);
+        FILE *f = fopen(path, "w");
+        assert_non_null(f);
+        fputs(MINIMAL, f);
+        fclose(f);
+        int rc = config_load(&c, path, NULL, 0, err, sizeof err);
+        if (rc) print_error("%s\n", err);
+        assert_int_equal(rc, 0);
+        assert_string_equal(c.name, rows[i].name);
+        snprintf(out, sizeof out, "out/%s", rows[i].name);
+        assert_string_equal(c.output_dir, out);
+        const char *named[] = {"case.name=given"};
+        assert_int_equal(config_load(&c, path, named, 1, err, sizeof err), 0);
+        assert_string_equal(c.name, "given");
+        unlink(path);
+    }
+    rmdir(dir);
+    assert_int_equal(load_text(&c, MINIMAL, NULL, 0, err), 0);
+    assert_string_equal(c.name, "case");
+    assert_string_equal(c.output_dir, "out/case");
+    assert_int_equal(load_text(&c, MINIMAL "[case]\nname = named\n", NULL, 0, err), 0);
+    assert_string_equal(c.name, "named");
+}
+
+/* '#' starts a comment as ';' does: on a line of its own, and after white space in a value;
+ * inside a word it is kept. */
+static void test_hash_comments(void **state)
+{
+    (void)state;
+    const char *text = "# a case\n" MINIMAL "  # indented comment\n"
+                       "[output]  # the outputs\n"
+                       "dir = out/run#2   # the second run\n"
+                       "timeseries_every = 0.5 # s\n"
+                       "[probes]\ngauges = 0.25, 0.5 # two gauges\n";
+    config c;
+    char err[ERR_LEN];
+    int rc = load_text(&c, text, NULL, 0, err);
+    if (rc) print_error("%s\n", err);
+    assert_int_equal(rc, 0);
+    assert_string_equal(c.output_dir, "out/run#2");
+    assert_true(c.timeseries_every == 0.5);
+    assert_int_equal(c.n_gauges, 2);
+    assert_round_trip(&c);
+    /* a path that would read back as a comment is refused, as with ';' */
+    const char *set[] = {"output.dir=out/a #b"};
+    assert_int_equal(load_text(&c, MINIMAL, set, 1, err), 2);
+    assert_contains(err, "output.dir");
+    assert_contains(err, "'#'");
+    const char *first[] = {"output.dir=#b"};
+    assert_int_equal(load_text(&c, MINIMAL, first, 1, err), 2);
+    assert_contains(err, "output.dir");
+}
+
+/* Every missing required key in one message (one line), each with where it belongs. */
+static void test_missing_keys_in_one_message(void **state)
+{
+    (void)state;
+    static const char *const required[] = {"case.t_end", "tank.length", "tank.height",
+                                           "liquid.height", "numerics.resolution"};
+    config c;
+    char err[ERR_LEN];
+    assert_int_equal(load_text(&c, "", NULL, 0, err), 2);
+    for (size_t i = 0; i < sizeof required / sizeof required[0]; i++)
+        assert_contains(err, required[i]);
+    assert_contains(err, "5 required keys missing");
+    assert_contains(err, "section [numerics] missing too");
+    assert_null(strchr(err, '\n'));
+
+    /* two of them, in sections that are there: at the first one's section header */
+    const char *text = "[case]\nt_end = 1\n[tank]\nlength = 1\n[liquid]\n[numerics]\n";
+    assert_int_equal(load_text(&c, text, NULL, 0, err), 2);
+    assert_contains(err, "bad.ini:3: 3 required keys missing: ");
+    assert_contains(err, "tank.height (in [tank], line 3: a length > 0 (m))");
+    assert_contains(err, "liquid.height (in [liquid], line 5");
+    assert_contains(err, "numerics.resolution (in [numerics], line 6");
+    assert_null(strstr(err, "case.t_end"));
+    assert_null(strstr(err, "tank.length"));
+    /* --set may give them */
+    const char *set[] = {"tank.height=1", "liquid.height=0.5", "numerics.resolution=10"};
+    assert_int_equal(load_text(&c, text, set, 3, err), 0);
+}
+
 /* ---- bad input: status 2 and one message with file, line and key ------------------------- */
 
 typedef struct {
@@ -492,6 +590,8 @@ static const bad_case bad_cases[] = {
         "bad.ini:11: ", "probes.pressure", "y = 0.6 m is outside the tank"),
     BAD("pressure points cut by a comment", MINIMAL "[probes]\npressure = 0.5 0.1 ; 0.6 0.1\n",
         "bad.ini:11: ", "probes.pressure", "starts a comment"),
+    BAD("gauges cut by a '#' comment", MINIMAL "[probes]\ngauges = 0.5 # 0.6\n",
+        "bad.ini:11: ", "probes.gauges", "' #' starts a comment"),
     BAD("no multi-line values", MINIMAL "[probes]\ngauges = 0.1\n   0.3\n", "bad.ini:12: ", "'0.3'",
         "expected [section], key = value"),
     BAD("line without '='", MINIMAL "[fluid]\ndensity 1000\n", "bad.ini:11: ", "'density 1000'"),
@@ -647,6 +747,9 @@ int main(void)
         cmocka_unit_test(test_overrides_in_order),
         cmocka_unit_test(test_motion_file_from_current_directory),
         cmocka_unit_test(test_names),
+        cmocka_unit_test(test_name_defaults_to_file_name),
+        cmocka_unit_test(test_hash_comments),
+        cmocka_unit_test(test_missing_keys_in_one_message),
         cmocka_unit_test(test_round_trip_minimal_and_full),
         cmocka_unit_test(test_round_trip_awkward_values),
         cmocka_unit_test(test_liquid_shape),

@@ -10,17 +10,23 @@ void cli_usage(FILE *out)
     fputs("usage: vcsph run CASE [--set section.key=value]... [-o DIR] [--overwrite] [--quiet]\n"
           "       vcsph run --restart OUTDIR/checkpoint.h5 [--set case.t_end=T]\n"
           "                 [--set output.KEY=VALUE]... [--quiet]\n"
-          "       vcsph check CASE [--set section.key=value]...\n"
+          "       vcsph check [--print] CASE [--set section.key=value]... [-o DIR]\n"
           "       vcsph volume SNAPSHOT...\n"
           "       vcsph plot OUTDIR\n"
+          "       vcsph keys\n"
           "       vcsph --help | --version\n"
           "\n"
           "  run     run the case; outputs go to output.dir of the case (default out/<name>)\n"
           "  check   validate the case and print the derived numbers; runs nothing\n"
+          "          --print: print the fully resolved case instead, the text a run writes\n"
+          "          as OUTDIR/case.ini (it loads back to the same case)\n"
           "  volume  print t, eps_v1 (Eq. 12) and eps_gm (Eq. 15) of saved snapshots (CSV)\n"
           "  plot    PNG plots of a run's output directory with gnuplot, into OUTDIR/images\n"
           "          (volume error and eta, energy, density, liquid, dissipation, probes;\n"
           "          the script OUTDIR/images/plot.gp can be edited and rerun)\n"
+          "  keys    list every key of the case file, one line each, four fields separated\n"
+          "          by tabs: section.key, default ('required' if none, '<...>' if computed,\n"
+          "          empty if empty), allowed values, meaning (docs/case-file.md)\n"
           "  --set   override any key of the case file (repeatable)\n"
           "  -o DIR  output directory; one run at a time (a second is refused, exit 2), and a\n"
           "          folder with another run's outputs is refused (exit 2) unless\n"
@@ -97,7 +103,7 @@ int cli_parse(int argc, char **argv, cli_args *args, char *err, int err_len)
     memset(args, 0, sizeof *args);
     if (argc < 2) {
         snprintf(err, (size_t)err_len,
-                 "vcsph: missing command (run, check, volume or plot); try vcsph --help");
+                 "vcsph: missing command (run, check, volume, plot or keys); try vcsph --help");
         return 2;
     }
     const char *cmd = argv[1];
@@ -124,13 +130,19 @@ int cli_parse(int argc, char **argv, cli_args *args, char *err, int err_len)
         snprintf(err, (size_t)err_len, "vcsph plot: give one output directory (vcsph plot OUTDIR)");
         return 2;
     }
+    if (!strcmp(cmd, "keys")) {
+        args->command = CLI_KEYS;
+        if (argc == 2) return 0;
+        snprintf(err, (size_t)err_len, "vcsph keys: takes no arguments ('%s')", argv[2]);
+        return 2;
+    }
     if (!strcmp(cmd, "run"))
         args->command = CLI_RUN;
     else if (!strcmp(cmd, "check"))
         args->command = CLI_CHECK;
     else {
         snprintf(err, (size_t)err_len,
-                 "vcsph: unknown command '%s' (allowed: run, check, volume, plot)", cmd);
+                 "vcsph: unknown command '%s' (allowed: run, check, volume, plot, keys)", cmd);
         return 2;
     }
     for (int k = 2; k < argc; k++) {
@@ -157,10 +169,16 @@ int cli_parse(int argc, char **argv, cli_args *args, char *err, int err_len)
             args->quiet = true;
         } else if (!strcmp(a, "--overwrite") && args->command == CLI_RUN) {
             args->overwrite = true;
+        } else if (!strcmp(a, "--print")) {
+            if (args->command != CLI_CHECK) {
+                snprintf(err, (size_t)err_len, "vcsph: only `vcsph check` takes --print");
+                return 2;
+            }
+            args->print = true;
         } else if (a[0] == '-') {
             snprintf(err, (size_t)err_len,
                      "vcsph: unknown option '%s' (allowed: --set, -o, --overwrite, --restart, "
-                     "--quiet)",
+                     "--quiet, --print)",
                      a);
             return 2;
         } else if (!args->case_path) {

@@ -7,7 +7,15 @@
 
 #define CLI_MAX_OVERRIDES 64
 
-typedef enum { CLI_RUN, CLI_CHECK, CLI_VOLUME, CLI_PLOT, CLI_HELP, CLI_VERSION } cli_command;
+typedef enum {
+    CLI_RUN,
+    CLI_CHECK,
+    CLI_VOLUME,
+    CLI_PLOT,
+    CLI_KEYS,
+    CLI_HELP,
+    CLI_VERSION
+} cli_command;
 
 typedef struct {
     cli_command command;
@@ -21,6 +29,7 @@ typedef struct {
     const char *restart_path; /* run --restart: the checkpoint to continue */
     bool quiet;
     bool overwrite; /* run: replace an earlier run's outputs in the folder */
+    bool print;     /* check --print: the resolved case instead of the derived numbers */
 } cli_args;
 
 /* Parses argv; returns 0, or 2 with a message in err. */

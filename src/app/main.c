@@ -15,7 +15,9 @@
 
 #define VCSPH_VERSION "0.1.0"
 
-static int check_case(const config *cfg)
+/* What a run checks before it starts beyond the case file itself: the motion table, and
+ * the derived numbers (derived_check). */
+static int validate_case(const config *cfg, derived *dv)
 {
     motion mo;
     char err[1024];
@@ -23,12 +25,25 @@ static int check_case(const config *cfg)
         fprintf(stderr, "vcsph: %s\n", err);
         return RUN_BAD_INPUT;
     }
-    derived dv;
-    derived_compute(cfg, &mo, &dv);
+    derived_compute(cfg, &mo, dv);
     motion_free(&mo);
-    if (derived_check(cfg, &dv, err, sizeof err)) {
+    if (derived_check(cfg, dv, err, sizeof err)) {
         fprintf(stderr, "vcsph: %s\n", err);
         return RUN_BAD_INPUT;
+    }
+    return RUN_OK;
+}
+
+/* `vcsph check`: the derived numbers, or with --print the resolved case exactly as a run
+ * writes it into case.ini (both config_write), printed only for a case that would run. */
+static int check_case(const config *cfg, bool print)
+{
+    derived dv;
+    int status = validate_case(cfg, &dv);
+    if (status != RUN_OK) return status;
+    if (print) {
+        config_write(cfg, stdout);
+        return RUN_OK;
     }
     printf("%s: valid\n", cfg->name);
     derived_print(cfg, &dv, stdout);
@@ -160,14 +175,19 @@ int main(int argc, char **argv)
     }
     if (args.command == CLI_VOLUME) return volume_of_snapshots(args.snapshots, args.n_snapshots);
     if (args.command == CLI_PLOT) return plot_run_dir(args.plot_dir);
+    if (args.command == CLI_KEYS) {
+        config_write_keys(stdout);
+        return RUN_OK;
+    }
     if (args.restart_path) return restart_run(&args);
     static config cfg;
     if (config_load(&cfg, args.case_path, args.overrides, args.n_overrides, err, sizeof err)) {
         fprintf(stderr, "vcsph: %s\n", err);
         return RUN_BAD_INPUT;
     }
-    if (args.command == CLI_CHECK) return check_case(&cfg);
+    /* before check, so that check --print shows the case.ini that run -o DIR writes */
     if (args.output_dir) snprintf(cfg.output_dir, sizeof cfg.output_dir, "%s", args.output_dir);
+    if (args.command == CLI_CHECK) return check_case(&cfg, args.print);
     run_options opt = {cfg.output_dir, args.quiet, args.overwrite};
     return simulation_run(&cfg, &opt);
 }

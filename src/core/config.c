@@ -21,6 +21,10 @@
 #define LINE_SET (-1)
 /* Values longer than this are shortened in messages, so the message itself stays readable. */
 #define SHOWN_VALUE_MAX 80
+/* Both start a comment, at the start of a line or after white space in a value: ';' is the
+ * INI convention, '#' the shell's, which users write by habit. A '#' inside a word (a path
+ * "run#2") is kept. */
+#define COMMENT_CHARS ";#"
 /* Relative slack of the liquid-inside-the-tank checks: 0.1 + 0.2 must fit in a tank 0.3 high. */
 #define FIT_SLACK 1e-12
 
@@ -69,11 +73,14 @@ typedef struct {
     const char *name;
     key_kind kind;
     unsigned flags;
-    const char *def; /* default spelled as in a file; unused for required and derived keys */
+    /* Default spelled as in a file. Required keys have none; for derived keys it is the rule,
+     * in words, that `vcsph keys` shows (resolve_defaults applies it). */
+    const char *def;
     size_t offset, size;
     range range;              /* numbers */
     const char *const *words; /* KIND_WORD and KIND_BOOL, NULL-terminated, in enum order */
     const char *allowed;      /* "must be <allowed>" in messages, the comment in config_write */
+    const char *meaning;      /* one line for `vcsph keys` and docs/case-file.md (no tab) */
 } key_spec;
 
 #define ANY                                                                                        \
@@ -100,10 +107,10 @@ typedef struct {
     {                                                                                              \
         lo, hi, true, false                                                                        \
     }
-#define KEY(sec, nam, kind, flags, def, field, rng, words, allowed)                                \
+#define KEY(sec, nam, kind, flags, def, field, rng, words, allowed, meaning)                       \
     {                                                                                              \
         sec, nam, kind, flags, def, offsetof(config, field), sizeof(((config *)0)->field), rng,    \
-            words, allowed                                                                         \
+            words, allowed, meaning                                                                \
     }
 
 static const char *const bool_words[] = {"false", "true", NULL};
@@ -122,93 +129,123 @@ static const char *const sections[] = {"case",  "tank",     "liquid", "fluid", "
 
 /* Design §3, in its order (config_write follows this table). */
 static const key_spec keys[] = {
-    KEY("case", "name", KIND_NAME, 0, "inm1", name, ANY, NULL,
-        "a name of letters, digits, '.', '_' and '-' starting with a letter or digit"),
-    KEY("case", "dim", KIND_INT, 0, "2", dim, CLOSED(2, 3), NULL, "2 or 3"),
-    KEY("case", "t_end", KIND_REAL, KEY_REQUIRED, NULL, t_end, POSITIVE, NULL, "a time > 0 (s)"),
+    KEY("case", "name", KIND_NAME, KEY_DERIVED, "<file base name>", name, ANY, NULL,
+        "a name of letters, digits, '.', '_' and '-' starting with a letter or digit",
+        "name of the case: titles, and <name> in output.dir"),
+    KEY("case", "dim", KIND_INT, 0, "2", dim, CLOSED(2, 3), NULL, "2 or 3",
+        "number of space dimensions"),
+    KEY("case", "t_end", KIND_REAL, KEY_REQUIRED, NULL, t_end, POSITIVE, NULL, "a time > 0 (s)",
+        "simulated time at which the run ends"),
     KEY("case", "experiment_dissipation", KIND_REAL, 0, "0.0", experiment_dissipation, NON_NEGATIVE,
-        NULL, "a number >= 0: the measured P/dW (P/dE_P with motion.decay > 0); 0 = none"),
+        NULL, "a number >= 0: the measured P/dW (P/dE_P with motion.decay > 0); 0 = none",
+        "measured dissipation per period, drawn as a line by vcsph plot"),
 
     KEY("tank", "length", KIND_REAL, KEY_REQUIRED, NULL, tank_length, POSITIVE, NULL,
-        "a length > 0 (m)"),
+        "a length > 0 (m)", "L: the tank's inner length along x"),
     KEY("tank", "height", KIND_REAL, KEY_REQUIRED, NULL, tank_height, POSITIVE, NULL,
-        "a length > 0 (m)"),
+        "a length > 0 (m)", "D: the tank's inner height along y"),
     KEY("tank", "width", KIND_REAL, 0, "1.0", tank_width, POSITIVE, NULL,
-        "a length > 0 (m; 3D only)"),
+        "a length > 0 (m; 3D only)",
+        "W: the tank's inner width along z (2D results are per unit width)"),
 
     KEY("liquid", "height", KIND_REAL, KEY_REQUIRED, NULL, liquid_height, POSITIVE, NULL,
-        "a length > 0 (m)"),
-    KEY("liquid", "length", KIND_REAL, KEY_DERIVED, NULL, liquid_length, POSITIVE, NULL,
-        "a length > 0 (m); default: the tank length"),
-    KEY("liquid", "x0", KIND_REAL, 0, "0.0", liquid_x0, NON_NEGATIVE, NULL, "a position >= 0 (m)"),
-    KEY("liquid", "y0", KIND_REAL, 0, "0.0", liquid_y0, NON_NEGATIVE, NULL, "a position >= 0 (m)"),
+        "a length > 0 (m)",
+        "H: the filling height; numerics.resolution counts particles across it"),
+    KEY("liquid", "length", KIND_REAL, KEY_DERIVED, "<tank.length>", liquid_length, POSITIVE, NULL,
+        "a length > 0 (m); default: the tank length", "length along x of the liquid box at t = 0"),
+    KEY("liquid", "x0", KIND_REAL, 0, "0.0", liquid_x0, NON_NEGATIVE, NULL, "a position >= 0 (m)",
+        "x of the liquid box's left side at t = 0"),
+    KEY("liquid", "y0", KIND_REAL, 0, "0.0", liquid_y0, NON_NEGATIVE, NULL, "a position >= 0 (m)",
+        "y of the liquid box's bottom at t = 0 (> 0 lifts it off the floor)"),
     KEY("liquid", "shape", KIND_WORD, 0, "box", liquid_shape, ANY, liquid_shape_words,
-        "one of box | ellipse (the ellipse, or ellipsoid, inscribed in the box)"),
+        "one of box | ellipse (the ellipse, or ellipsoid, inscribed in the box)",
+        "the liquid at t = 0: the whole box, or the ellipse inscribed in it"),
 
     KEY("fluid", "density", KIND_REAL, 0, "1000.0", density, POSITIVE, NULL,
-        "a density > 0 (kg/m^3)"),
+        "a density > 0 (kg/m^3)", "rho0: reference density of the liquid"),
     KEY("fluid", "viscosity", KIND_REAL, 0, "1.0e-6", viscosity, POSITIVE, NULL,
-        "a kinematic viscosity > 0 (m^2/s)"),
+        "a kinematic viscosity > 0 (m^2/s)", "nu: kinematic viscosity of the liquid"),
     KEY("fluid", "surface_tension", KIND_REAL, 0, "0.0", surface_tension, NON_NEGATIVE, NULL,
-        "a surface tension >= 0 (N/m; 0 = off)"),
+        "a surface tension >= 0 (N/m; 0 = off)",
+        "sigma: surface tension coefficient of the free surface"),
     KEY("fluid", "gravity", KIND_REAL, 0, "9.81", gravity, NON_NEGATIVE, NULL,
-        "an acceleration >= 0 (m/s^2, along -y)"),
+        "an acceleration >= 0 (m/s^2, along -y)", "g: magnitude of gravity, pointing along -y"),
 
     KEY("motion", "type", KIND_WORD, 0, "none", motion, ANY, motion_words,
-        "one of none | sway | heave | table"),
+        "one of none | sway | heave | table",
+        "prescribed tank motion: none, sway (x), heave (y) or a table"),
     KEY("motion", "amplitude", KIND_REAL, 0, "0.0", amplitude, NON_NEGATIVE, NULL,
-        "a length >= 0 (m)"),
+        "a length >= 0 (m)", "A: amplitude of the sway or heave displacement"),
     KEY("motion", "period", KIND_REAL, 0, "0.0", period, NON_NEGATIVE, NULL,
-        "a time >= 0 (s), > 0 when type is sway or heave"),
-    KEY("motion", "decay", KIND_REAL, 0, "0.0", decay, NON_NEGATIVE, NULL, "a rate >= 0 (1/s)"),
-    KEY("motion", "phase", KIND_REAL, 0, "0.0", phase, ANY, NULL, "an angle (rad)"),
+        "a time >= 0 (s), > 0 when type is sway or heave", "T: period of the sway or heave motion"),
+    KEY("motion", "decay", KIND_REAL, 0, "0.0", decay, NON_NEGATIVE, NULL, "a rate >= 0 (1/s)",
+        "l: the amplitude decays as A exp(-l t)"),
+    KEY("motion", "phase", KIND_REAL, 0, "0.0", phase, ANY, NULL, "an angle (rad)",
+        "phi: phase of the motion at t = 0, added to 2 pi t / T"),
     KEY("motion", "duration", KIND_REAL, 0, "0.0", duration, NON_NEGATIVE, NULL,
-        "a time >= 0 (s; 0 = whole run)"),
+        "a time >= 0 (s; 0 = whole run)",
+        "time after which the tank stops accelerating (keeps its velocity)"),
     KEY("motion", "file", KIND_PATH, 0, "", motion_file, ANY, NULL,
-        "a readable CSV file t,x,y[,z] (required when type = table)"),
+        "a readable CSV file t,x,y[,z] (required when type = table)",
+        "CSV of the tank displacement t,x,y[,z] for type = table"),
 
     KEY("model", "scheme", KIND_WORD, 0, "delta-plus-ale", scheme, ANY, scheme_words,
-        "one of standard | delta | delta-plus | delta-ale | delta-plus-ale"),
+        "one of standard | delta | delta-plus | delta-ale | delta-plus-ale",
+        "SPH model of the paper's Table 1"),
     KEY("model", "edbc", KIND_WORD, 0, "auto", edbc, ANY, edbc_words,
-        "one of auto | true | false | with-eta0 (auto: with-eta0 for delta-plus-ale, else false)"),
+        "one of auto | true | false | with-eta0 (auto: with-eta0 for delta-plus-ale, else false)",
+        "EdBC of Eq. (9): p = 0, rho = rho0 on thin jets and drops"),
     KEY("model", "volume_correction", KIND_WORD, 0, "auto", volume_correction, ANY,
         volume_correction_words,
-        "one of auto | none | geometric (auto: geometric for delta-plus-ale, else none)"),
+        "one of auto | none | geometric (auto: geometric for delta-plus-ale, else none)",
+        "vcsph's geometric volume correction (moves particles)"),
     KEY("model", "eta_threshold", KIND_REAL, 0, "0.01", eta_threshold, OPEN(0.0, 1.0), NULL,
-        "a number in (0, 1)"),
+        "a number in (0, 1)", "|eps_v1| at which delta-plus-ALE switches eta"),
     KEY("model", "eta_control", KIND_WORD, 0, "threshold", eta_control, ANY, eta_control_words,
-        "one of threshold | adaptive"),
-    KEY("model", "les", KIND_BOOL, 0, "true", les, ANY, bool_words, "true or false"),
+        "one of threshold | adaptive",
+        "how delta-plus-ALE sets eta: the paper's switch or vcsph's adaptive control"),
+    KEY("model", "les", KIND_BOOL, 0, "true", les, ANY, bool_words, "true or false",
+        "Smagorinsky eddy viscosity (Eq. 4) with van Driest wall damping"),
     KEY("model", "wall", KIND_WORD, 0, "no-slip", wall, ANY, wall_words,
-        "one of no-slip | free-slip"),
+        "one of no-slip | free-slip", "velocity condition of the walls for the viscous term"),
 
     KEY("numerics", "resolution", KIND_INT, KEY_REQUIRED, NULL, resolution, CLOSED(4, INT_MAX),
-        NULL, "an integer >= 4 (particles across liquid.height)"),
-    KEY("numerics", "h_over_dr", KIND_REAL, KEY_DERIVED, NULL, h_over_dr, CLOSED(1.0, 4.0), NULL,
-        "a number in [1, 4]; default 2.0 in 2D, 1.5 in 3D"),
+        NULL, "an integer >= 4 (particles across liquid.height)",
+        "N = H / dr: particles across the filling height"),
+    KEY("numerics", "h_over_dr", KIND_REAL, KEY_DERIVED, "2.0 in 2D, 1.5 in 3D", h_over_dr,
+        CLOSED(1.0, 4.0), NULL, "a number in [1, 4]; default 2.0 in 2D, 1.5 in 3D",
+        "smoothing length over particle spacing (support radius 2h)"),
     KEY("numerics", "sound_speed", KIND_REAL_AUTO, 0, "auto", sound_speed, POSITIVE, NULL,
-        "auto or a speed > 0 (m/s)"),
+        "auto or a speed > 0 (m/s)",
+        "c0 of the equation of state; auto: 10 sqrt(2 g_max H) (Eq. 6)"),
     KEY("numerics", "cfl", KIND_REAL_AUTO, 0, "auto", cfl, LEFT_OPEN(0.0, 2.0), NULL,
-        "auto or a number in (0, 2]"),
+        "auto or a number in (0, 2]",
+        "K_c of the acoustic time step dt = K_c h / c0 (Eq. 8); auto: Table 1"),
     KEY("numerics", "density_bound", KIND_REAL, 0, "0.2", density_bound, OPEN(0.0, 1.0), NULL,
-        "a fraction in (0, 1): a density outside rho0 (1 +- bound) is a breakdown"),
+        "a fraction in (0, 1): a density outside rho0 (1 +- bound) is a breakdown",
+        "how far a density may stray from rho0 before the run stops (exit 3)"),
 
     KEY("probes", "gauges", KIND_GAUGES, 0, "", gauges, ANY, NULL,
-        "x positions (m) inside the tank, separated by commas or spaces"),
+        "x positions (m) inside the tank, separated by commas or spaces",
+        "x of wave gauges: liquid depth on a vertical line, into probes.csv"),
     KEY("probes", "pressure", KIND_POINTS, 0, "", pressure_probes, ANY, NULL,
-        "points 'x y[ z]' (m) inside the tank, separated by ';'"),
+        "points 'x y[ z]' (m) inside the tank, separated by ';'",
+        "points where the SPH pressure is sampled, into probes.csv"),
 
     KEY("output", "dir", KIND_PATH, KEY_NOT_EMPTY, "out/<name>", output_dir, ANY, NULL,
-        "a directory path ('<name>' stands for case.name)"),
+        "a directory path ('<name>' stands for case.name)",
+        "output directory of the run (-o overrides it)"),
     KEY("output", "timeseries_every", KIND_REAL, 0, "0.0", timeseries_every, NON_NEGATIVE, NULL,
-        "a time >= 0 (s; 0 = every step)"),
+        "a time >= 0 (s; 0 = every step)",
+        "simulated time between rows of timeseries.csv and probes.csv"),
     KEY("output", "snapshot_every", KIND_REAL, 0, "0.0", snapshot_every, NON_NEGATIVE, NULL,
-        "a time >= 0 (s; 0 = none)"),
+        "a time >= 0 (s; 0 = none)", "simulated time between HDF5 snapshots"),
     KEY("output", "image_every", KIND_REAL, 0, "0.0", image_every, NON_NEGATIVE, NULL,
-        "a time >= 0 (s; 0 = none)"),
+        "a time >= 0 (s; 0 = none)", "simulated time between particle images"),
     KEY("output", "checkpoint_every", KIND_REAL, 0, "600", checkpoint_every, NON_NEGATIVE, NULL,
-        "a wall-clock time >= 0 (s; 0 = none)"),
-    KEY("output", "graphical", KIND_BOOL, 0, "false", graphical, ANY, bool_words, "true or false"),
+        "a wall-clock time >= 0 (s; 0 = none)", "wall-clock time between checkpoints"),
+    KEY("output", "graphical", KIND_BOOL, 0, "false", graphical, ANY, bool_words, "true or false",
+        "also compute eps_gm (Eq. 15) at every time-series row (costly)"),
 };
 #define N_KEYS (sizeof keys / sizeof keys[0])
 
@@ -533,14 +570,21 @@ static bool set_name(parse_ctx *ctx, const key_spec *k, const char *s, char *why
     return true;
 }
 
-/* A path must survive config_write and config_load: no control characters, and no ';' that
- * INI would take for the start of a comment. */
+/* Whether INI reads p, a character of the value s, as the start of an inline comment: a
+ * comment character after white space. config_write puts a space after '=', so a value that
+ * starts with one would read back as a comment too. */
+static bool starts_comment(const char *s, const char *p)
+{
+    return strchr(COMMENT_CHARS, *p) && (p == s || isspace((unsigned char)p[-1]));
+}
+
+/* A path must survive config_write and config_load: no control characters, and no ';' or '#'
+ * that INI would take for the start of a comment. */
 static bool path_is_writable(const char *s)
 {
-    if (s[0] == ';') return false;
     for (const char *p = s; *p; p++) {
         if (iscntrl((unsigned char)*p)) return false;
-        if (*p == ';' && p > s && isspace((unsigned char)p[-1])) return false;
+        if (starts_comment(s, p)) return false;
     }
     return true;
 }
@@ -552,7 +596,9 @@ static bool set_path(parse_ctx *ctx, const key_spec *k, const char *s, char *why
         return false;
     }
     if (!path_is_writable(s)) {
-        snprintf(why, n, "control characters and ';' after a space are not allowed in a path");
+        snprintf(why, n,
+                 "control characters, and ';' or '#' first or after a space (INI reads a "
+                 "comment there), are not allowed in a path");
         return false;
     }
     if (!store_string(field(ctx->cfg, k), k->size, s)) {
@@ -831,7 +877,7 @@ static void check_section_header(parse_ctx *ctx)
     char at[CONFIG_PATH_MAX + 32];
     where(ctx, ctx->lineno, at, sizeof at);
     const char *rest = skip_space(end + 1);
-    if (*rest && *rest != ';' && *rest != '#') {
+    if (*rest && !strchr(COMMENT_CHARS, *rest)) {
         fail(ctx, "%s: unexpected text after [%s]; only a comment may follow a section header", at,
              name);
         return;
@@ -869,13 +915,13 @@ static char *read_line(char *str, int num, void *stream)
 }
 
 /* True when the raw line's value holds an inline comment that starts like a number: inih cuts
- * "0.1 0.2 ; 0.3 0.4" at " ;", which would silently drop probes. */
+ * "0.1 0.2 ; 0.3 0.4" at " ;" (and "0.1 # 0.3" at " #"), which would silently drop probes. */
 static bool list_cut_by_comment(const char *raw)
 {
     const char *p = raw + strcspn(raw, "=:");
     if (!*p) return false;
     for (p++; *p; p++) {
-        if (*p == ';' && isspace((unsigned char)p[-1])) {
+        if (strchr(COMMENT_CHARS, *p) && isspace((unsigned char)p[-1])) {
             const char *q = skip_space(p + 1);
             return isdigit((unsigned char)*q) || (*q && strchr("+-.", *q));
         }
@@ -906,7 +952,7 @@ static int on_key(void *user, const char *section, const char *name, const char 
     }
     if ((k->kind == KIND_GAUGES || k->kind == KIND_POINTS) && list_cut_by_comment(ctx->line)) {
         fail_value(ctx, k, ctx->lineno, value,
-                   "' ;' starts a comment in INI and would drop the numbers after it; "
+                   "' ;' or ' #' starts a comment in INI and would drop the numbers after it; "
                    "write ';' right after a number, as in '0.1 0.2; 0.3 0.4'");
         return 0;
     }
@@ -950,8 +996,8 @@ static void ini_options_set(const ini_options *o)
 static void parse_input(parse_ctx *ctx)
 {
     /* No multi-line values: an indented line must not be glued to the previous value. */
-    static const ini_options ours = {false, true, true, true,         true,
-                                     false, ";#", ";",  CASE_LINE_MAX};
+    static const ini_options ours = {false, true,          true,          true,         true,
+                                     false, COMMENT_CHARS, COMMENT_CHARS, CASE_LINE_MAX};
     ini_options saved = ini_options_get();
     ini_options_set(&ours);
     int rc = ini_parse_stream(read_line, ctx, on_key, ctx);
@@ -1016,15 +1062,39 @@ static void apply_override(parse_ctx *ctx, const char *arg)
 
 /* ---- checks and defaults once every key is known ------------------------------------------- */
 
+/* Appends to buf what a missing key is and where it belongs, "; " between two. */
+static void describe_missing(const parse_ctx *ctx, const key_spec *k, char *buf, size_t size)
+{
+    size_t used = strlen(buf);
+    int header = ctx->section_line[section_index(k->section)];
+    char place[64];
+    if (header)
+        snprintf(place, sizeof place, "in [%s], line %d", k->section, header);
+    else
+        snprintf(place, sizeof place, "section [%s] missing too", k->section);
+    snprintf(buf + used, size - used, "%s%s.%s (%s: %s)", used ? "; " : "", k->section, k->name,
+             place, k->allowed);
+}
+
+/* All the missing required keys in one message, so that a user fixes them in one go. One
+ * missing key is blamed where it belongs (fail_key); several at the first one's place. */
 static void check_required(parse_ctx *ctx)
 {
-    for (size_t i = 0; i < N_KEYS && !ctx->failed; i++) {
-        if ((keys[i].flags & KEY_REQUIRED) && !given(ctx, &keys[i])) {
-            char why[256];
-            snprintf(why, sizeof why, "required: %s", keys[i].allowed);
-            fail_key(ctx, &keys[i], why);
-        }
+    const key_spec *missing[N_KEYS];
+    size_t n = 0;
+    for (size_t i = 0; i < N_KEYS; i++)
+        if ((keys[i].flags & KEY_REQUIRED) && !given(ctx, &keys[i])) missing[n++] = &keys[i];
+    if (n == 0) return;
+    char why[1024] = "";
+    if (n == 1) {
+        snprintf(why, sizeof why, "required: %s", missing[0]->allowed);
+        fail_key(ctx, missing[0], why);
+        return;
     }
+    for (size_t i = 0; i < n; i++) describe_missing(ctx, missing[i], why, sizeof why);
+    char at[CONFIG_PATH_MAX + 32];
+    fail(ctx, "%s: %zu required keys missing: %s",
+         where(ctx, ctx->section_line[section_index(missing[0]->section)], at, sizeof at), n, why);
 }
 
 /* Replaces every "<name>" in the output directory by the case name. */
@@ -1048,9 +1118,37 @@ static bool expand_name(char *dir, size_t size, const char *name)
     return store_string(dir, size, out);
 }
 
+/* case.name by default: the case file's base name without its extension, so that a case
+ * without a name writes into out/<its file name>. Characters a name may not hold become '_',
+ * and "case-" goes in front of one that does not start with a letter or digit; a case read
+ * from a string (no file) is "case". */
+static void default_name(const char *path, char *name, size_t size)
+{
+    const char *base = path ? strrchr(path, '/') : NULL;
+    base = base ? base + 1 : path;
+    if (!base || !*base) {
+        snprintf(name, size, "case");
+        return;
+    }
+    const char *dot = strrchr(base, '.');
+    size_t len = dot && dot > base ? (size_t)(dot - base) : strlen(base);
+    size_t used = is_ascii_alnum(base[0]) ? 0 : (size_t)snprintf(name, size, "case-");
+    for (size_t i = 0; i < len && used + 1 < size; i++) {
+        char c = base[i];
+        name[used++] = is_ascii_alnum(c) || strchr("._-", c) ? c : '_';
+    }
+    name[used] = '\0';
+}
+
 static void resolve_defaults(parse_ctx *ctx)
 {
     config *cfg = ctx->cfg;
+    const key_spec *name = key_of("case", "name");
+    if (!given(ctx, name)) {
+        char text[CONFIG_NAME_MAX];
+        default_name(ctx->case_path, text, sizeof text);
+        if (!apply(ctx, name, text, 0)) return; /* cannot happen: default_name makes a name */
+    }
     if (!given(ctx, key_of("liquid", "length"))) cfg->liquid_length = cfg->tank_length;
     if (!given(ctx, key_of("numerics", "h_over_dr"))) cfg->h_over_dr = cfg->dim == 3 ? 1.5 : 2.0;
     /* the scheme-dependent defaults (docs/volume-correction.md, "Defaults") */
@@ -1261,6 +1359,22 @@ void config_write(const config *cfg, FILE *out)
         }
         kinds[k->kind].format(cfg, k, value, sizeof value);
         fprintf(out, "%-16s = %s ; %s\n", k->name, value, k->allowed);
+    }
+}
+
+/* The default column of `vcsph keys`: the default as a file spells it, the rule of a derived
+ * default, or "required". */
+static const char *key_default_text(const key_spec *k)
+{
+    return (k->flags & KEY_REQUIRED) ? "required" : k->def;
+}
+
+void config_write_keys(FILE *out)
+{
+    for (size_t i = 0; i < N_KEYS; i++) {
+        const key_spec *k = &keys[i];
+        fprintf(out, "%s.%s\t%s\t%s\t%s\n", k->section, k->name, key_default_text(k), k->allowed,
+                k->meaning);
     }
 }
 

@@ -83,17 +83,26 @@ typedef struct {
 
 /* Loads and validates a case file, then applies overrides "section.key=value" (from --set)
  * in order. On failure returns 2 and writes one message into err naming file, line, key and
- * what is allowed; cfg is then unspecified. Returns 0 on success. */
+ * what is allowed (every missing required key at once); cfg is then unspecified. Returns 0 on
+ * success. case.name defaults to the file's base name without its extension. Both ';' and '#'
+ * start a comment (docs/case-file.md). */
 int config_load(config *cfg, const char *path, const char *const *overrides, int n_overrides,
                 char *err, size_t err_len);
 
-/* Same, from a string (tests, fuzzing); `origin` names it in messages. */
+/* Same, from a string (tests, fuzzing, a checkpoint's case); `origin` names it in messages.
+ * Without a file to name it, case.name defaults to "case". */
 int config_load_string(config *cfg, const char *text, const char *origin,
                        const char *const *overrides, int n_overrides, char *err, size_t err_len);
 
 /* Writes the fully resolved case (every key, defaults and overrides applied) as an INI file
  * that config_load reads back to the same struct. */
 void config_write(const config *cfg, FILE *out);
+
+/* Writes every key of the case file, one line each, in the order of config_write, as four
+ * fields separated by tabs: section.key, default (as a file spells it; "<...>" for a default
+ * computed from something else, "required" for a key without one, empty for an empty
+ * default), what is allowed, and its meaning. `vcsph keys` prints it. */
+void config_write_keys(FILE *out);
 
 /* The spellings of the case file (design §3), e.g. "delta-plus-ale", "with-eta0". */
 const char *config_scheme_name(scheme_kind s);
