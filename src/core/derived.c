@@ -348,6 +348,10 @@ void derived_print(const config *cfg, const derived *dv, FILE *out)
     fprintf(out, "V0               %.6g m^%d\n", dv->v0, cfg->dim);
     fprintf(out, "g_max            %.6g m/s^2\n", dv->g_max);
     fprintf(out, "c0               %.6g m/s%s\n", dv->c0, cfg->sound_speed > 0 ? "" : " (auto)");
+    fprintf(out,
+            "Eq. (6) c0 >=    %.4g m/s (10 max(sqrt(g_max H), U_max); tank's peak speed %.4g "
+            "m/s, fall from H %.4g m/s)\n",
+            dv->c0_eq6, dv->u_tank_max, dv->u_fall);
     fprintf(out, "K_c              %g\n", dv->k_c);
     fprintf(out, "dt_c             %.4g s\n", dv->dt_c);
     fprintf(out, "dt_v             %.4g s\n", dv->dt_v);
