@@ -5,15 +5,23 @@
 #include "boundary/motion.h"
 #include "core/config.h"
 #include "core/derived.h"
+#include "core/estimate.h"
 #include "io/checkpoint.h"
 #include "io/hdf5_errors.h"
 #include "io/snapshot_read.h"
 
+#include <omp.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #define VCSPH_VERSION "0.1.0"
+
+static void warn_stderr(const char *msg, void *ctx)
+{
+    (void)ctx;
+    fprintf(stderr, "vcsph: warning: %s\n", msg);
+}
 
 /* What a run checks before it starts beyond the case file itself: the motion table, and
  * the derived numbers (derived_check). */
@@ -41,12 +49,19 @@ static int check_case(const config *cfg, bool print)
     derived dv;
     int status = validate_case(cfg, &dv);
     if (status != RUN_OK) return status;
+    derived_warnings(cfg, &dv, warn_stderr, NULL);
     if (print) {
         config_write(cfg, stdout);
         return RUN_OK;
     }
     printf("%s: valid\n", cfg->name);
     derived_print(cfg, &dv, stdout);
+    run_estimate est;
+    char memory[256], wall[256];
+    estimate_run(cfg, &dv, omp_get_max_threads(), &est);
+    estimate_describe(&est, memory, sizeof memory, wall, sizeof wall);
+    printf("memory estimate  %s\n", memory);
+    printf("wall time est.   %s\n", wall);
     return RUN_OK;
 }
 

@@ -7,6 +7,7 @@
 #include "app/run_summary.h"
 #include "app/progress.h"
 #include "app/run_state.h"
+#include "core/estimate.h"
 #include "core/log.h"
 #include "diag/energy.h"
 #include "diag/health.h"
@@ -248,6 +249,12 @@ static void start_fresh(run *r)
     r->period = 1;
 }
 
+static void log_warning(const char *msg, void *ctx)
+{
+    (void)ctx;
+    log_error("vcsph: warning: %s", msg);
+}
+
 static void log_start(const run *r)
 {
     const config *cfg = r->cfg;
@@ -256,6 +263,18 @@ static void log_start(const run *r)
              "%d threads",
              cfg->name, DIM, config_scheme_name(cfg->scheme), dv->n_fluid, dv->dr, dv->c0,
              cfg->t_end, omp_get_max_threads());
+    /* the warnings and estimates of `vcsph check` (core/derived.c, core/estimate.c) */
+    derived_warnings(cfg, dv, log_warning, NULL);
+    run_estimate est;
+    char memory[256], wall[256];
+    estimate_run(cfg, dv, omp_get_max_threads(), &est);
+    if (r->resumed && cfg->t_end > 0.0) { /* the steps left from the checkpoint's time */
+        double left = fmax(0.0, 1.0 - r->s.t / cfg->t_end);
+        est.steps *= left;
+        est.seconds *= left;
+    }
+    estimate_describe(&est, memory, sizeof memory, wall, sizeof wall);
+    log_info("vcsph: memory estimate %s; wall time estimate %s", memory, wall);
     if (r->s.mo.kind == MOTION_TABLE) /* theory §6: say once how the table was read */
         log_info("vcsph: motion table %s: %zu rows, t in [%g, %g] s, accelerations from a "
                  "natural cubic spline (zero outside the table), largest |g - a_tank| = %.4g m/s^2",

@@ -125,6 +125,65 @@ double motion_max_effective_gravity(const motion *mo, double gravity, double t_e
     return g_max;
 }
 
+/* Calls visit(x, v, ctx) at the table's knots and 15 points between each two, over
+   [t[0], min(t_end, duration, t[n-1])]: the samples of the table's speed and range. */
+static void sample_table(const motion *mo, double t_end,
+                         void (*visit)(const double x[3], const double v[3], void *ctx), void *ctx)
+{
+    double stop = t_end;
+    if (mo->duration > 0.0 && mo->duration < stop) stop = mo->duration;
+    for (size_t k = 0; k + 1 < mo->n_knots && mo->t[k] <= stop; k++)
+        for (int j = 0; j <= 16; j++) {
+            double t = mo->t[k] + (mo->t[k + 1] - mo->t[k]) * j / 16.0, x[3], v[3];
+            if (t > stop) t = stop;
+            /* state_at holds the ends still: sample just inside the last interval */
+            if (t >= mo->t[mo->n_knots - 1]) t = nextafter(mo->t[mo->n_knots - 1], 0.0);
+            state_at(mo, t, x, v);
+            visit(x, v, ctx);
+        }
+}
+
+static void keep_speed(const double x[3], const double v[3], void *ctx)
+{
+    (void)x;
+    double s = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]), *most = ctx;
+    if (s > *most) *most = s;
+}
+
+double motion_max_speed(const motion *mo, double t_end)
+{
+    if (mo->kind == MOTION_NONE) return 0.0;
+    if (mo->kind != MOTION_TABLE)
+        return fabs(mo->amplitude) * sqrt(mo->omega * mo->omega + mo->decay * mo->decay);
+    double most = 0.0;
+    sample_table(mo, t_end, keep_speed, &most);
+    return most;
+}
+
+static void keep_range(const double x[3], const double v[3], void *ctx)
+{
+    (void)v;
+    double(*range)[3] = ctx; /* range[0]: lowest, range[1]: highest */
+    for (int d = 0; d < 3; d++) {
+        if (x[d] < range[0][d]) range[0][d] = x[d];
+        if (x[d] > range[1][d]) range[1][d] = x[d];
+    }
+}
+
+void motion_max_excursion(const motion *mo, double t_end, double out[3])
+{
+    out[0] = out[1] = out[2] = 0.0;
+    if (mo->kind == MOTION_NONE) return;
+    if (mo->kind != MOTION_TABLE) {
+        out[mo->kind == MOTION_SWAY ? 0 : 1] = fabs(mo->amplitude);
+        return;
+    }
+    double range[2][3] = {{INFINITY, INFINITY, INFINITY}, {-INFINITY, -INFINITY, -INFINITY}};
+    sample_table(mo, t_end, keep_range, range);
+    for (int d = 0; d < 3; d++)
+        out[d] = range[1][d] >= range[0][d] ? 0.5 * (range[1][d] - range[0][d]) : 0.0;
+}
+
 /* Natural cubic spline: second derivatives y2 of y(t) at the knots (tridiagonal solve). */
 static int spline_second_derivatives(const double *t, const double *y, size_t n, double *y2)
 {

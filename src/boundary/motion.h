@@ -24,5 +24,13 @@ void motion_acceleration(const motion *mo, double t, double a[3]);
 void motion_position(const motion *mo, double t, double x[3]);
 /* Largest |g - a_tank| over [0, t_end] (sampled), the g_max of the sound-speed rule. */
 double motion_max_effective_gravity(const motion *mo, double gravity, double t_end);
+/* Largest tank speed |v_tank| over [0, t_end] (after `duration` the speed stays that of its
+ * end): A sqrt(w^2 + l^2) for sway and heave (A w without decay, an upper bound with it), the
+ * spline's largest speed for a table (sampled, 16 points per row interval). */
+double motion_max_speed(const motion *mo, double t_end);
+/* Half the range of the tank's displacement along x, y, z over [0, t_end] while it is driven
+ * (before `duration`; what follows is uniform motion, which the liquid does not feel): A
+ * along the axis of sway or heave, the sampled spline's for a table. */
+void motion_max_excursion(const motion *mo, double t_end, double out[3]);
 
 #endif

@@ -1,5 +1,6 @@
 /* derived: numbers that follow from the case (theory §3, §7, §10). */
 #include "core/derived.h"
+#include "physics/eos.h"
 #include "scheme/models.h"
 
 #include <limits.h>
@@ -10,6 +11,8 @@
    liquid box lattice holds more points than that is refused (derived_check), and neither counted
    nor multiplied out in a long (derived_compute). */
 #define PARTICLES_MAX INT32_MAX
+
+static int check_sanity(const config *cfg, const derived *dv, char *err, size_t err_len);
 
 static double min2(double a, double b) { return a < b ? a : b; }
 
@@ -117,6 +120,15 @@ void derived_compute(const config *cfg, const motion *mo, derived *dv)
     dv->c0 = cfg->sound_speed > 0.0 ? cfg->sound_speed
                                     : 10.0 * sqrt(2.0 * dv->g_max * cfg->liquid_height);
     dv->k_c = cfg->cfl > 0.0 ? cfg->cfl : models_params(cfg->scheme).k_c;
+    /* Eq. (6): c0 >= max(10 U_max, 10 sqrt(dp_max / rho)), with dp_max = rho g_max H, the
+       column under the largest effective gravity, and U_max the larger of the tank's own peak
+       speed and the free fall from H (the `auto` rule's speed, which alone ignores the tank's) */
+    dv->u_tank_max = motion_max_speed(mo, cfg->t_end);
+    dv->u_fall = sqrt(2.0 * dv->g_max * cfg->liquid_height);
+    double u_max = dv->u_tank_max > dv->u_fall ? dv->u_tank_max : dv->u_fall;
+    double u_hydro = sqrt(dv->g_max * cfg->liquid_height);
+    dv->c0_eq6 = 10.0 * (u_max > u_hydro ? u_max : u_hydro);
+    motion_max_excursion(mo, cfg->t_end, dv->excursion);
 
     double h = dv->h;
     dv->dt_v = 0.125 * h * h / cfg->viscosity;
@@ -179,7 +191,131 @@ int derived_check(const config *cfg, const derived *dv, char *err, size_t err_le
                  "response, which needs periodic motion or gravity; use eta_control = threshold");
         return 2;
     }
+    return check_sanity(cfg, dv, err, err_len);
+}
+
+/* The liquid's extent along axis d, and the keys that set it and its particle count. */
+static const char *const axis_name[3] = {"x", "y", "z"};
+static const char *const axis_keys[3] = {"liquid.length or numerics.resolution",
+                                         "numerics.resolution",
+                                         "tank.width (the liquid fills it) or numerics.resolution"};
+
+static double liquid_extent(const config *cfg, int d)
+{
+    return d == 0 ? cfg->liquid_length : d == 1 ? cfg->liquid_height : cfg->tank_width;
+}
+
+/* The limit of Eq. (8) that sets dt, and the keys that set that limit. */
+static void dt_limit(const derived *dv, const char **name, const char **keys)
+{
+    if (dv->dt == dv->dt_c) {
+        *name = "dt_c = K_c h / c0";
+        *keys = "numerics.sound_speed (auto: from g_max, i.e. motion.amplitude and motion.period)";
+    } else if (dv->dt == dv->dt_a) {
+        *name = "dt_a = 0.25 sqrt(h / g_max)";
+        *keys = "motion.amplitude or motion.period (g_max)";
+    } else if (dv->dt == dv->dt_v) {
+        *name = "dt_v = 0.125 h^2 / nu";
+        *keys = "fluid.viscosity";
+    } else {
+        *name = "dt_st = 0.25 sqrt(rho0 h^3 / (2 pi sigma))";
+        *keys = "fluid.surface_tension";
+    }
+}
+
+/* The checks of derived_check that the issue 19 sanity checks added: a case whose first step
+   already breaks a bound, or that would never end. */
+static int check_sanity(const config *cfg, const derived *dv, char *err, size_t err_len)
+{
+    /* fewer than 2 particles across: no pair of particles along that axis, no gradient */
+    for (int d = 0; d < cfg->dim; d++)
+        if (dv->n_axis[d] < DERIVED_MIN_ACROSS) {
+            snprintf(err, err_len,
+                     "the liquid is %ld particle(s) across %s (%.6g m at dr = H/N = %.6g m); at "
+                     "least %d are needed: raise %s",
+                     dv->n_axis[d], axis_name[d], liquid_extent(cfg, d), dv->dr, DERIVED_MIN_ACROSS,
+                     axis_keys[d]);
+            return 2;
+        }
+    /* more steps than any run on this kind of machine can make (1e10 steps of even 100
+       particles at a microsecond each are 11 days): a unit error, or a case that never ends */
+    double steps = cfg->t_end / dv->dt;
+    if (!(steps <= DERIVED_MAX_STEPS)) {
+        const char *name, *keys;
+        dt_limit(dv, &name, &keys);
+        snprintf(err, err_len,
+                 "case.t_end = %g s at dt = %.3g s (Eq. 8: %s, c0 = %.3g m/s, g_max = %.3g "
+                 "m/s^2) is %.3g steps, more than %.0e; lower case.t_end or check %s",
+                 cfg->t_end, dv->dt, name, dv->c0, dv->g_max, steps, DERIVED_MAX_STEPS, keys);
+        return 2;
+    }
+    /* the linear EOS (Eq. 3) at the bottom of a column H under g_max at rest: the lattice
+       starts hydrostatic (under g), and the health check stops a run whose density leaves
+       rho0 (1 +- density_bound) (diag/health.c) */
+    double rho0 = cfg->density, p_bottom = rho0 * dv->g_max * cfg->liquid_height;
+    double rho_bottom = eos_density(p_bottom, rho0, dv->c0);
+    if (!(rho_bottom <= rho0 * (1.0 + cfg->density_bound))) {
+        snprintf(err, err_len,
+                 "numerics.sound_speed: the hydrostatic density at the bottom, rho0 (1 + g_max H "
+                 "/ c0^2) = %.6g kg/m^3 (g_max = %.4g m/s^2, H = %g m, c0 = %.4g m/s), is outside "
+                 "rho0 (1 +- %g) (numerics.density_bound) before the first step; raise "
+                 "numerics.sound_speed to at least %.3g m/s (Eq. 6 asks %.3g m/s) or "
+                 "numerics.density_bound",
+                 rho_bottom, dv->g_max, cfg->liquid_height, dv->c0, cfg->density_bound,
+                 sqrt(dv->g_max * cfg->liquid_height / cfg->density_bound), dv->c0_eq6);
+        return 2;
+    }
     return 0;
+}
+
+int derived_warnings(const config *cfg, const derived *dv, void (*emit)(const char *msg, void *ctx),
+                     void *ctx)
+{
+    char msg[1024];
+    int n = 0;
+    /* Eq. (6): density variations within 1 % need c0 >= 10 U_max */
+    if (dv->c0 < dv->c0_eq6) {
+        bool tank = dv->u_tank_max > dv->u_fall;
+        snprintf(msg, sizeof msg,
+                 "numerics.sound_speed: c0 = %.4g m/s%s is below Eq. (6)'s 10 max(sqrt(g_max H), "
+                 "U_max) = %.4g m/s, U_max = %.4g m/s the %s (tank: %.4g m/s, fall from H under "
+                 "g_max = %.4g m/s^2: %.4g m/s); expect density errors above 1 %%",
+                 dv->c0, cfg->sound_speed > 0.0 ? "" : " (auto)", dv->c0_eq6,
+                 tank ? dv->u_tank_max : dv->u_fall,
+                 tank ? "tank's peak speed" : "speed of a fall from H", dv->u_tank_max, dv->g_max,
+                 dv->u_fall);
+        emit(msg, ctx);
+        n++;
+    }
+    /* a kernel of h = 2 dr reaches 4 particles: with fewer than 8 across there is no
+       particle that both walls or surfaces leave alone */
+    for (int d = 0; d < cfg->dim; d++)
+        if (dv->n_axis[d] < DERIVED_FEW_ACROSS) {
+            snprintf(msg, sizeof msg,
+                     "the liquid is %ld particles across %s (%.6g m at dr = %.6g m), fewer than "
+                     "%d: the kernel (2h = %.3g m) spans it; raise %s",
+                     dv->n_axis[d], axis_name[d], liquid_extent(cfg, d), dv->dr, DERIVED_FEW_ACROSS,
+                     2.0 * dv->h, axis_keys[d]);
+            emit(msg, ctx);
+            n++;
+        }
+    /* The tank moves as a whole and the particles live in the tank frame, so no amplitude
+       takes the liquid out of the tank; only the effective gravity g - a_tank reaches it.
+       But a driven displacement larger than the tank itself along the same axis (sway: x,
+       heave: y) is no sloshing experiment: almost certainly a unit error (mm written as m). */
+    const double size[3] = {cfg->tank_length, cfg->tank_height, cfg->tank_width};
+    for (int d = 0; d < 3; d++)
+        if (dv->excursion[d] > size[d]) {
+            snprintf(msg, sizeof msg,
+                     "%s: the tank's displacement along %s reaches +-%.4g m, more than the "
+                     "tank's own %.4g m along that axis: a unit error? (motion amplitudes are "
+                     "in m)",
+                     cfg->motion == MOTION_TABLE ? "motion.file" : "motion.amplitude", axis_name[d],
+                     dv->excursion[d], size[d]);
+            emit(msg, ctx);
+            n++;
+        }
+    return n;
 }
 
 void derived_print(const config *cfg, const derived *dv, FILE *out)
@@ -212,6 +348,10 @@ void derived_print(const config *cfg, const derived *dv, FILE *out)
     fprintf(out, "V0               %.6g m^%d\n", dv->v0, cfg->dim);
     fprintf(out, "g_max            %.6g m/s^2\n", dv->g_max);
     fprintf(out, "c0               %.6g m/s%s\n", dv->c0, cfg->sound_speed > 0 ? "" : " (auto)");
+    fprintf(out,
+            "Eq. (6) c0 >=    %.4g m/s (10 max(sqrt(g_max H), U_max); tank's peak speed %.4g "
+            "m/s, fall from H %.4g m/s)\n",
+            dv->c0_eq6, dv->u_tank_max, dv->u_fall);
     fprintf(out, "K_c              %g\n", dv->k_c);
     fprintf(out, "dt_c             %.4g s\n", dv->dt_c);
     fprintf(out, "dt_v             %.4g s\n", dv->dt_v);

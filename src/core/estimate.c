@@ -1,0 +1,85 @@
+/* estimate: memory and wall time of a case before it runs (docs/checks.md). Compiled for
+ * DIM = 2 and 3: the particle store's bytes per slot and the RK4 work arrays depend on DIM. */
+#include "core/estimate.h"
+#include "core/particles.h"
+#include "scheme/solver.h"
+
+#include <math.h>
+#include <stdint.h>
+
+/* Cost of one particle-step (one fluid particle through one RK4 step, its ghosts, neighbour
+   lists, per-step fields and volume diagnostics included) on one thread of the 2-core
+   development machine, measured on whole runs of the shipped cases with their outputs
+   (delta-plus-ALE, surface tension, probes): docs/validation.md, "Cost", INM1 2D at N = 25:
+   1.6e5 particle-steps per CPU second, 6.2 us each; INM2 3D at N = 20: 3.9e4 per CPU second,
+   25.6 us each. `make bench` (docs/performance.md) times the bare delta-SPH step of a 2D tank
+   at 2.5e5 - 3.2e5 particle-steps/s on one thread (3.1 - 4.0 us): the cases' schemes and
+   outputs cost more than that, hence the run figures. */
+#define US_PER_PARTICLE_STEP (DIM == 2 ? 6.2 : 1e6 / 3.9e4)
+
+/* Lattice points of an axis of n points, spaced s, whose first point is dist0 + s/2 from a
+   wall, that lie within `reach` of it: the layers that get a ghost on that side. */
+static double layers(double dist0, double s, long n, double reach)
+{
+    double q = (reach - dist0) / s - 0.5;
+    if (!(q > 0.0)) return 0.0;
+    q = ceil(q);
+    return q < (double)n ? q : (double)n;
+}
+
+void DIM_NAME(estimate_run)(const config *cfg, const derived *dv, int threads, run_estimate *e)
+{
+    const double tank[3] = {cfg->tank_length, cfg->tank_height, cfg->tank_width};
+    const double lo[3] = {cfg->liquid_x0, cfg->liquid_y0, 0.0};
+    const double len[3] = {cfg->liquid_length, cfg->liquid_height, cfg->tank_width};
+    /* the neighbour lists' and ghosts' radius 2h + skin, the skin at its floor 0.05 dr
+       (the particles are at rest at t = 0: build_neighbours in integrate.c) */
+    double reach = 2.0 * dv->h + 0.05 * dv->dr;
+    double n = (double)dv->n_fluid, box = 1.0, padded = 1.0, cells = 1.0, cell_volume = 1.0;
+    for (int d = 0; d < DIM; d++) {
+        double nd = (double)dv->n_axis[d];
+        double ghost_lo = layers(lo[d], dv->spacing[d], dv->n_axis[d], reach);
+        double ghost_hi = layers(tank[d] - (lo[d] + len[d]), dv->spacing[d], dv->n_axis[d], reach);
+        box *= nd;
+        padded *= nd + ghost_lo + ghost_hi;
+        cells *= fmax(1.0, floor((tank[d] + 2.0 * reach) / reach)); /* cells_setup */
+        cell_volume *= dv->spacing[d];
+    }
+    /* tank_make_ghosts mirrors each particle within reach of a wall once per wall, edge and
+       corner: the padded lattice less the lattice; for the ellipse, in proportion to its
+       share of the box's points */
+    double ghosts = box > 0.0 ? (padded - box) * n / box : 0.0;
+    double total = n + ghosts;
+
+    /* the store: lattice_fill reserves n + n/2 + 64 slots, tank_make_ghosts doubles them
+       when the ghosts need more */
+    double capacity = floor(n + n / 2.0) + 64.0;
+    while (capacity < total) capacity *= 2.0;
+    double store = (double)particles_bytes_per_slot() * capacity;
+    /* alloc_work in solver.c: y0, sum, the rates (RK_VARS each), scratch, and the order */
+    double work = ((3.0 * RK_VARS + 1.0) * sizeof(double) + sizeof(size_t)) * n;
+    /* neighbours_build: a row of row_capacity int32 per fluid particle, 64 (2D) or 128 (3D)
+       entries, or 1.25 times the most neighbours when a row overflows; at rest a particle
+       has about the lattice points of the ball of radius reach */
+    double ball = DIM == 2 ? M_PI * reach * reach : 4.0 / 3.0 * M_PI * reach * reach * reach;
+    double row = DIM == 2 ? 64.0 : 128.0, inside = ball / cell_volume;
+    if (inside > row) row = ceil(1.25 * inside);
+    double lists = (row + 1.0) * sizeof(int32_t) * n;
+    /* the cell grid: start per cell, item and cell_of per particle */
+    double grid = (cells + 1.0) * sizeof(size_t) + 2.0 * sizeof(uint32_t) * total;
+    /* surface tension's work, over fluid and ghosts */
+    double st =
+        cfg->surface_tension > 0.0
+            ? ((2.0 * DIM + 2.0) * sizeof(double) + sizeof(int32_t) + sizeof(surface_body)) * total
+            : 0.0;
+
+    e->n_fluid = n;
+    e->n_ghost = ghosts;
+    e->bytes = store + work + lists + grid + st;
+    e->bytes_per_particle = n > 0.0 ? e->bytes / n : 0.0;
+    e->neighbours_per_row = row;
+    e->steps = cfg->t_end / dv->dt;
+    e->us_per_particle_step = US_PER_PARTICLE_STEP;
+    e->threads = threads > 0 ? threads : 1;
+    e->seconds = e->steps * n * US_PER_PARTICLE_STEP * 1e-6 / e->threads;
+}
