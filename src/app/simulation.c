@@ -5,6 +5,7 @@
 #include "app/progress.h"
 #include "app/run_state.h"
 #include "core/log.h"
+#include "core/version.h"
 #include "diag/energy.h"
 #include "diag/health.h"
 #include "io/csv.h"
@@ -217,9 +218,9 @@ static void log_start(const run *r)
 {
     const config *cfg = r->cfg;
     const derived *dv = &r->s.dv;
-    log_info("vcsph: %s, %dD, %s, %ld particles, dr = %.4g m, c0 = %.4g m/s, t_end = %g s",
-             cfg->name, DIM, config_scheme_name(cfg->scheme), dv->n_fluid, dv->dr, dv->c0,
-             cfg->t_end);
+    log_info("vcsph %s: %s, %dD, %s, %ld particles, dr = %.4g m, c0 = %.4g m/s, t_end = %g s",
+             vcsph_version(), cfg->name, DIM, config_scheme_name(cfg->scheme), dv->n_fluid, dv->dr,
+             dv->c0, cfg->t_end);
     if (r->s.mo.kind == MOTION_TABLE) /* theory §6: say once how the table was read */
         log_info("vcsph: motion table %s: %zu rows, t in [%g, %g] s, accelerations from a "
                  "natural cubic spline (zero outside the table), largest |g - a_tank| = %.4g m/s^2",
