@@ -242,7 +242,7 @@ static void add_tick(tick_set *t, double at, const char *text)
 
 /* The ticks over [lo, hi] drawn `length` pixels long, their numbers `mult` times the values
  * followed by `suffix`: the most (up to MAX_TICKS) that keep the numbers apart, which is their
- * width plus a character's advance when they lie along the axis (`along`) and a text line
+ * width plus two characters' advance when they lie along the axis (`along`) and a text line
  * when they are stacked across it. A range with no nice step (see image_nice_step) gets its
  * ends and middle, as printed by "%.3g". */
 static void make_ticks(double lo, double hi, double mult, const char *suffix, double length,
@@ -263,7 +263,7 @@ static void make_ticks(double lo, double hi, double mult, const char *suffix, do
             add_tick(t, at < lo ? lo : at > hi ? hi : at, buf);
         }
         double spacing = step / (shown_hi - shown_lo) * length;
-        double needed = along ? (double)(t->widest + ADVANCE) : LINE;
+        double needed = along ? (double)(t->widest + 2 * ADVANCE) : LINE;
         if (spacing >= needed || max == 2) return;
     }
     *t = (tick_set){0};
