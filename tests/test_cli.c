@@ -13,6 +13,7 @@
 #include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
+#include <hdf5.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -22,6 +23,7 @@
 #include <unistd.h>
 
 #include "core/config.h"
+#include "io/hdf5_attr.h"
 
 #include "check.h"
 #include "table.h"
@@ -515,8 +517,8 @@ typedef struct {
 
 static const warn_case warn_cases[] = {
     /* c0 = 2 m/s: hydrostatic +12 % at the bottom (within 0.2), but below Eq. (6)'s
-     * 10 sqrt(2 g H) = 9.90 m/s */
-    {"warn_low_c0", {"numerics.sound_speed=2", NULL}, {"numerics.sound_speed", "Eq. (6)", "9.905"}},
+     * 10 sqrt(g H) = 7.004 m/s (H = 0.05 m, a tank at rest) */
+    {"warn_low_c0", {"numerics.sound_speed=2", NULL}, {"numerics.sound_speed", "Eq. (6)", "7.004"}},
     /* 3D, 2 cm wide at dr = 6.25 mm: 3 particles across z */
     {"warn_few_particles",
      {"case.dim=3", "tank.width=0.02", NULL},
@@ -663,9 +665,67 @@ static void test_graphical_after_restart(void **state)
     table_free(&b);
 }
 
+/* ---- the version ---------------------------------------------------------------------------- */
+
+/* The attribute vcsph_version of the HDF5 file `name` in the fixture's folder (malloc'd) */
+static char *version_attribute(const fixture *fx, const char *name)
+{
+    char path[512];
+    path_in(fx, name, path, sizeof path);
+    hid_t file = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT);
+    if (file < 0) fail_msg("cannot open %s", name);
+    char *version = hdf5_attr_read_string(file, "vcsph_version");
+    H5Fclose(file);
+    if (!version) fail_msg("%s has no string attribute vcsph_version", name);
+    return version;
+}
+
+/* `vcsph --version` prints "vcsph VERSION" (core/version.h); a run says the same VERSION on
+ * the first line of log.txt and keeps it as the attribute vcsph_version of every snapshot and
+ * of checkpoint.h5. */
+static void test_version_in_outputs(void **state)
+{
+    fixture *fx = *state;
+    assert_int_equal(run_vcsph(fx, (const char *const[]){"--version", NULL}), 0);
+    char *out = read_file(fx, "stdout.txt");
+    if (strncmp(out, "vcsph ", 6) != 0) fail_msg("--version printed '%s'", out);
+    char *nl = strchr(out, '\n');
+    assert_non_null(nl);
+    assert_string_equal(nl + 1, ""); /* one line */
+    *nl = '\0';
+    const char *version = out + 6;
+    assert_true(strlen(version) > 0);
+    assert_null(strchr(version, ' '));
+
+    write_file(fx, "tiny.ini", tiny_case);
+    int rc = run_vcsph(fx, (const char *const[]){"run", "tiny.ini", "--set", "case.t_end=0.02",
+                                                 "--set", "output.checkpoint_every=1e-9", "-o",
+                                                 "res", "--quiet", NULL});
+    if (rc) {
+        char *err = read_file(fx, "stderr.txt");
+        print_error("stderr:\n%s", err);
+        free(err);
+    }
+    assert_int_equal(rc, 0);
+    static const char *const files[] = {"res/snapshots/000000.h5", "res/snapshots/000001.h5",
+                                        "res/checkpoint.h5"};
+    for (size_t k = 0; k < sizeof files / sizeof files[0]; k++) {
+        char *attr = version_attribute(fx, files[k]);
+        if (strcmp(attr, version) != 0)
+            fail_msg("%s: vcsph_version '%s', --version '%s'", files[k], attr, version);
+        free(attr);
+    }
+    char *log = read_file(fx, "res/log.txt"), first[256];
+    snprintf(first, sizeof first, "vcsph %s: tiny, 2D, ", version);
+    if (strncmp(log, first, strlen(first)) != 0)
+        fail_msg("log.txt does not begin with '%s':\n%.200s", first, log);
+    free(log);
+    free(out);
+}
+
 int main(void)
 {
-    struct CMUnitTest tests[N_BAD + 5 + N_WARN];
+    struct CMUnitTest tests[N_BAD + 6 + N_WARN];
     for (size_t k = 0; k < N_BAD; k++)
         tests[k] = (struct CMUnitTest){bad_cases[k].name, test_bad_input, setup, teardown,
                                        (void *)&bad_cases[k]};
@@ -679,8 +739,10 @@ int main(void)
         test_volume_command_matches_series, setup, teardown);
     tests[N_BAD + 4] = (struct CMUnitTest)cmocka_unit_test_setup_teardown(
         test_graphical_after_restart, setup, teardown);
+    tests[N_BAD + 5] = (struct CMUnitTest)cmocka_unit_test_setup_teardown(test_version_in_outputs,
+                                                                          setup, teardown);
     for (size_t k = 0; k < N_WARN; k++)
-        tests[N_BAD + 5 + k] = (struct CMUnitTest){warn_cases[k].name, test_warning, setup,
+        tests[N_BAD + 6 + k] = (struct CMUnitTest){warn_cases[k].name, test_warning, setup,
                                                    teardown, (void *)&warn_cases[k]};
-    return _cmocka_run_group_tests("test_cli", tests, N_BAD + 5 + N_WARN, NULL, NULL);
+    return _cmocka_run_group_tests("test_cli", tests, N_BAD + 6 + N_WARN, NULL, NULL);
 }

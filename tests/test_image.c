@@ -19,6 +19,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "io/font5x7.h"
 #include "io/image.h"
 
 #include "check.h"
@@ -122,6 +123,66 @@ static void print_pixel(const char *what, const uint8_t *p)
 {
     print_message("%s: (%d, %d, %d)\n", what, p[0], p[1], p[2]);
 }
+
+/* ---------------------------------------------------------------------------------------- */
+/* Text in the image                                                                         */
+
+enum { DOT = 2, CELL = (FONT5X7_WIDTH + 1) * DOT }; /* the font scaled 2x (io/image.h) */
+
+/* The image pixel of dot (k, r) (column, row of the glyph) of character i of a text at (x, y):
+ * upright, (x, y) is the first character's top-left pixel; written upwards, its bottom-left
+ * pixel (the glyph's top on the left). */
+static void dot_pixel(uint32_t x, uint32_t y, bool up, int i, int k, int r, long *u, long *v)
+{
+    if (up) {
+        *u = (long)x + r * DOT;
+        *v = (long)y - (long)i * CELL - (k + 1) * DOT + 1;
+    } else {
+        *u = (long)x + (long)i * CELL + k * DOT;
+        *v = (long)y + r * DOT;
+    }
+}
+
+/* Whether s is drawn at (x, y) exactly: every dot of its glyphs dark, every other pixel of the
+ * glyphs' cells white. */
+static bool text_at(const png_rgb *img, uint32_t x, uint32_t y, const char *s, bool up)
+{
+    for (int i = 0; s[i]; i++) {
+        const uint8_t *rows = font5x7[(unsigned char)s[i] - FONT5X7_FIRST];
+        for (int r = 0; r < FONT5X7_HEIGHT; r++)
+            for (int k = 0; k < FONT5X7_WIDTH; k++) {
+                long u, v;
+                dot_pixel(x, y, up, i, k, r, &u, &v);
+                if (u < 0 || v < 0 || u + DOT > (long)img->width || v + DOT > (long)img->height)
+                    return false;
+                bool on = rows[r] & (1u << (FONT5X7_WIDTH - 1 - k));
+                for (int d = 0; d < DOT * DOT; d++) {
+                    const uint8_t *p =
+                        png_pixel(img, (uint32_t)(u + d % DOT), (uint32_t)(v + d / DOT));
+                    if (on ? !is_dark(p) : !is_white(p)) return false;
+                }
+            }
+    }
+    return true;
+}
+
+/* Looks for s with its anchor (text_at's (x, y)) in columns x0 .. x1 - 1 and rows y0 .. y1 - 1;
+ * true with the first place found in (*x, *y). */
+static bool find_text(const png_rgb *img, const char *s, bool up, uint32_t x0, uint32_t x1,
+                      uint32_t y0, uint32_t y1, uint32_t *x, uint32_t *y)
+{
+    for (uint32_t j = y0; j < y1 && j < img->height; j++)
+        for (uint32_t i = x0; i < x1 && i < img->width; i++)
+            if (text_at(img, i, j, s, up)) {
+                *x = i;
+                *y = j;
+                return true;
+            }
+    return false;
+}
+
+/* The column of the middle of s's ink when its first character starts at column x */
+static double text_centre(uint32_t x, const char *s) { return x + (strlen(s) * CELL - DOT) / 2.0; }
 
 /* ---------------------------------------------------------------------------------------- */
 /* Size and layout                                                                           */
@@ -364,6 +425,135 @@ static void test_colour_bar_and_text(void **state)
     png_rgb_free(&img);
 }
 
+/* The tick steps are 1, 2 or 5 times a power of ten, the smallest that gives at most
+ * max_ticks ticks in the range; an impossible range has none. */
+static void test_nice_step(void **state)
+{
+    (void)state;
+    /* exact: the step is m / 10^k, which rounds like the literal */
+    assert_true(image_nice_step(0.0, 0.1172, 8) == 0.02); /* 0, 0.02 .. 0.1: 6 ticks */
+    assert_true(image_nice_step(0.0, 1.0, 8) == 0.2);     /* 0.1 would give 11 */
+    assert_true(image_nice_step(0.0, 0.5, 8) == 0.1);     /* 6 ticks, the ends included */
+    assert_true(image_nice_step(0.0, 0.75, 8) == 0.1);    /* 8 */
+    assert_true(image_nice_step(0.0, 3.0, 8) == 0.5);     /* 0.2 would give 16 */
+    assert_true(image_nice_step(0.0, 1e-3, 8) == 2e-4);
+    assert_true(image_nice_step(0.0, 250.0, 8) == 50.0);
+    assert_true(image_nice_step(0.1, 0.9, 8) == 0.2);  /* 0.1 .. 0.9 by 0.1 is 9 */
+    assert_true(image_nice_step(-2.0, 2.0, 8) == 1.0); /* the per-cent bar of +-2 % */
+    assert_true(image_nice_step(-0.02, 0.02, 8) == 0.01);
+    assert_true(image_nice_step(-1.0, 1.0, 8) == 0.5); /* 5 ticks */
+    assert_true(image_nice_step(0.0, 1.0, 2) == 1.0);  /* 0.5 would give 3 */
+    assert_true(image_nice_step(3.0, 3.5, 8) == 0.1);  /* away from 0 */
+    assert_true(image_nice_step(1e6, 1e6 + 7, 8) == 1.0);
+    /* about 4 to 8 ticks over ranges of every size and offset */
+    for (int e = -6; e <= 6; e++)
+        for (int k = 1; k <= 100; k++) {
+            double lo = 0.037 * k * pow(10, e), hi = lo + 0.0931 * k * pow(10, e);
+            double step = image_nice_step(lo, hi, 8);
+            double n = floor(hi / step + 1e-9) - ceil(lo / step - 1e-9) + 1;
+            if (!(n >= 3 && n <= 8)) fail_msg("[%g, %g]: step %g gives %g ticks", lo, hi, step, n);
+            double m = step / pow(10, floor(log10(step) + 1e-9));
+            assert_true(fabs(m - 1) < 1e-9 || fabs(m - 2) < 1e-9 || fabs(m - 5) < 1e-9);
+        }
+    assert_true(image_nice_step(1.0, 1.0, 8) == 0);
+    assert_true(image_nice_step(1.0, 0.0, 8) == 0);
+    assert_true(image_nice_step(0.0, NAN, 8) == 0);
+    assert_true(image_nice_step(-INFINITY, 0.0, 8) == 0);
+    assert_true(image_nice_step(-1e308, 1e308, 8) == 0); /* hi - lo overflows */
+    assert_true(image_nice_step(0.0, 1.0, 1) == 0);
+}
+
+/* The axes: numbers in metres centred under their tick marks below the tank and beside them
+ * left of it, the labels "x (m)" under the numbers and "y (m)", written upwards, left of them;
+ * the colour bar of a per-cent frame is numbered in per cent at nice values. */
+static void test_axes_and_percent_bar(void **state)
+{
+    fixture *fx = *state;
+    image_frame f = tank_frame(); /* 1 m x 0.5 m at 400 px/m: ticks every 0.2 m and 0.1 m */
+    f.percent = true;
+    f.vmin = -0.02;
+    f.vmax = 0.02;
+    image_layout l = layout_of(&f, WIDE);
+    png_rgb img = write_and_read(fx, "axes.png", &f, WIDE);
+    uint32_t x, y, right = l.tank_left + l.tank_width - 1, bottom = l.tank_top + l.tank_height - 1;
+
+    /* x: "0.4" centred on its mark at column tank_left + 160, under the outline */
+    uint32_t col = l.tank_left + 160;
+    assert_true(is_dark(png_pixel(&img, col, bottom + 3)));
+    assert_true(is_white(png_pixel(&img, col - 1, bottom + 4)));
+    assert_true(is_white(png_pixel(&img, col + 1, bottom + 4)));
+    if (!find_text(&img, "0.4", false, 0, img.width, bottom + 3, img.height, &x, &y))
+        fail_msg("no x number 0.4 under the tank");
+    assert_close(text_centre(x, "0.4"), col, 1.0);
+    uint32_t x_numbers = y;
+    assert_true(find_text(&img, "0.0", false, 0, img.width, bottom + 3, img.height, &x, &y));
+    assert_close(text_centre(x, "0.0"), l.tank_left, 1.0);
+    assert_true(find_text(&img, "1.0", false, 0, img.width, bottom + 3, img.height, &x, &y));
+    assert_close(text_centre(x, "1.0"), right, 1.0);
+    assert_false(find_text(&img, "0.5", false, 0, img.width, bottom + 3, img.height, &x, &y));
+    if (!find_text(&img, "x (m)", false, 0, img.width, x_numbers + 1, img.height, &x, &y))
+        fail_msg("no x label under the numbers");
+    assert_close(text_centre(x, "x (m)"), l.tank_left + l.tank_width / 2.0, 2.0);
+
+    /* y: "0.2" at row tank_top + 120, right-aligned left of its mark */
+    uint32_t row = l.tank_top + 120;
+    assert_true(is_dark(png_pixel(&img, l.tank_left - 3, row)));
+    assert_true(is_white(png_pixel(&img, l.tank_left - 4, row - 1)));
+    if (!find_text(&img, "0.2", false, 0, l.tank_left, l.tank_top - 8, bottom, &x, &y))
+        fail_msg("no y number 0.2 left of the tank");
+    assert_close(y + (FONT5X7_HEIGHT * DOT - 1) / 2.0, row, 1.0);
+    assert_true(x + 3 * CELL - DOT < (uint32_t)l.tank_left - 2);
+    uint32_t y_numbers = x;
+    assert_true(find_text(&img, "0.5", false, 0, l.tank_left, 0, bottom, &x, &y));
+    assert_true(find_text(&img, "0.0", false, 0, l.tank_left, 0, img.height, &x, &y));
+    if (!find_text(&img, "y (m)", true, 0, y_numbers, l.tank_top, img.height, &x, &y))
+        fail_msg("no y label left of the numbers");
+    assert_close(y - (5 * CELL - DOT - 1) / 2.0, l.tank_top + l.tank_height / 2.0, 2.0);
+
+    /* the bar: -2 % .. 2 % by 1 %, at the rows of their values */
+    uint32_t beyond = l.bar_left + l.bar_width + 1;
+    const char *percent[5] = {"2 %", "1 %", "0 %", "-1 %", "-2 %"};
+    for (int k = 0; k < 5; k++) {
+        uint32_t expected = l.bar_top + (uint32_t)lround(k * (l.bar_height - 1) / 4.0);
+        assert_true(is_dark(png_pixel(&img, l.bar_left + l.bar_width, expected)));
+        /* "2 %" is also the end of "-2 %": the first found from the top is the top one */
+        if (!find_text(&img, percent[k], false, beyond, img.width, 0, img.height, &x, &y))
+            fail_msg("no bar number '%s'", percent[k]);
+        assert_close(y + (FONT5X7_HEIGHT * DOT - 1) / 2.0, expected, 1.0);
+    }
+    assert_false(find_text(&img, "0.02", false, beyond, img.width, 0, img.height, &x, &y));
+    png_rgb_free(&img);
+
+    /* without per cent, the values themselves */
+    f.percent = false;
+    img = write_and_read(fx, "fractions.png", &f, WIDE);
+    assert_true(find_text(&img, "0.02", false, beyond, img.width, 0, img.height, &x, &y));
+    assert_true(find_text(&img, "-0.01", false, beyond, img.width, 0, img.height, &x, &y));
+    assert_false(find_text(&img, "2 %", false, beyond, img.width, 0, img.height, &x, &y));
+    png_rgb_free(&img);
+}
+
+/* Narrow images get fewer ticks, so that the numbers never touch; a tank a few pixels wide
+ * still draws. */
+static void test_ticks_fit(void **state)
+{
+    fixture *fx = *state;
+    image_frame f = tank_frame();
+    image_layout l = layout_of(&f, 200); /* 0.2 m would be 40 px apart: too close */
+    png_rgb img = write_and_read(fx, "narrow.png", &f, 200);
+    uint32_t x, y, bottom = l.tank_top + l.tank_height - 1;
+    assert_true(find_text(&img, "0.5", false, 0, img.width, bottom + 3, img.height, &x, &y));
+    assert_false(find_text(&img, "0.2", false, 0, img.width, bottom + 3, img.height, &x, &y));
+    png_rgb_free(&img);
+    for (int wide = 1; wide <= 40; wide += 13) {
+        img = write_and_read(fx, "tiny.png", &f, wide);
+        png_rgb_free(&img);
+    }
+    f.width = 3.0; /* a flat tank: 400 x 67 px */
+    img = write_and_read(fx, "flat.png", &f, WIDE);
+    png_rgb_free(&img);
+}
+
 /* ---------------------------------------------------------------------------------------- */
 /* Bad input and files                                                                       */
 
@@ -504,6 +694,9 @@ int main(void)
         cmocka_unit_test_setup_teardown(test_outside_tank, setup, teardown),
         cmocka_unit_test_setup_teardown(test_outline_and_empty_frame, setup, teardown),
         cmocka_unit_test_setup_teardown(test_colour_bar_and_text, setup, teardown),
+        cmocka_unit_test(test_nice_step),
+        cmocka_unit_test_setup_teardown(test_axes_and_percent_bar, setup, teardown),
+        cmocka_unit_test_setup_teardown(test_ticks_fit, setup, teardown),
         cmocka_unit_test_setup_teardown(test_bad_range_refused, setup, teardown),
         cmocka_unit_test_setup_teardown(test_other_bad_input_refused, setup, teardown),
         cmocka_unit_test_setup_teardown(test_files, setup, teardown),

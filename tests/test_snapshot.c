@@ -23,6 +23,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "core/version.h"
+#include "io/hdf5_attr.h"
 #include "io/snapshot.h"
 
 #include "temp_dir.h"
@@ -217,6 +219,13 @@ static void check_attrs(hid_t file, const snapshot_attrs *a)
     free(text);
     H5Tclose(t);
     H5Aclose(attr);
+
+    /* the vcsph that wrote it */
+    char *version = hdf5_attr_read_string(file, "vcsph_version");
+    assert_non_null(version);
+    assert_true(version[0] != '\0');
+    assert_string_equal(version, vcsph_version());
+    free(version);
 }
 
 /* Reads a whole snapshot back and checks it against the sample. */

@@ -6,6 +6,7 @@
 #include "core/config.h"
 #include "core/derived.h"
 #include "core/estimate.h"
+#include "core/version.h"
 #include "io/checkpoint.h"
 #include "io/hdf5_errors.h"
 #include "io/snapshot_read.h"
@@ -14,8 +15,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-#define VCSPH_VERSION "0.1.0"
 
 static void warn_stderr(const char *msg, void *ctx)
 {
@@ -185,7 +184,7 @@ int main(int argc, char **argv)
         return RUN_OK;
     }
     if (args.command == CLI_VERSION) {
-        printf("vcsph %s\n", VCSPH_VERSION);
+        printf("vcsph %s\n", vcsph_version());
         return RUN_OK;
     }
     if (args.command == CLI_VOLUME) return volume_of_snapshots(args.snapshots, args.n_snapshots);

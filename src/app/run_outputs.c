@@ -277,7 +277,8 @@ static int rewind_xdmf(run *r)
 
 /* Particle images (design §1): the local volume error eps_Vi of every particle, like the
  * paper's Figs. 13 and 21; a 3D run shows its mid-width slice, the particles within 0.6 dr of
- * z = W/2 (one lattice layer, or the two either side of the middle). */
+ * z = W/2 (one lattice layer, or the two either side of the middle). The colour bar reads in
+ * per cent, the axes in metres. */
 #define IMAGE_PIXELS    800  /* the tank's width in the image */
 #define IMAGE_EPS_RANGE 0.02 /* colours span eps_Vi in [-2 %, +2 %] */
 
@@ -310,7 +311,8 @@ int run_write_image(run *r)
                      .vmax = IMAGE_EPS_RANGE,
                      .label = "eps_Vi",
                      .title = title,
-                     .time = s->t};
+                     .time = s->t,
+                     .percent = true};
     snprintf(name, sizeof name, "images/particles_%06d.png", r->n_images);
     run_out_path(r, path, sizeof path, name);
     int status = image_write_particles(path, &f, IMAGE_PIXELS, err, sizeof err);

@@ -9,6 +9,7 @@
 #include "app/run_state.h"
 #include "core/estimate.h"
 #include "core/log.h"
+#include "core/version.h"
 #include "diag/energy.h"
 #include "diag/health.h"
 #include "io/csv.h"
@@ -259,10 +260,10 @@ static void log_start(const run *r)
 {
     const config *cfg = r->cfg;
     const derived *dv = &r->s.dv;
-    log_info("vcsph: %s, %dD, %s, %ld particles, dr = %.4g m, c0 = %.4g m/s, t_end = %g s, "
+    log_info("vcsph %s: %s, %dD, %s, %ld particles, dr = %.4g m, c0 = %.4g m/s, t_end = %g s, "
              "%d threads",
-             cfg->name, DIM, config_scheme_name(cfg->scheme), dv->n_fluid, dv->dr, dv->c0,
-             cfg->t_end, omp_get_max_threads());
+             vcsph_version(), cfg->name, DIM, config_scheme_name(cfg->scheme), dv->n_fluid, dv->dr,
+             dv->c0, cfg->t_end, omp_get_max_threads());
     /* the warnings and estimates of `vcsph check` (core/derived.c, core/estimate.c) */
     derived_warnings(cfg, dv, log_warning, NULL);
     run_estimate est;

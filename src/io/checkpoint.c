@@ -1,5 +1,6 @@
 /* checkpoint: named arrays in one verified HDF5 file (checkpoint.h). */
 #include "io/checkpoint.h"
+#include "core/version.h"
 #include "io/atomic_file.h"
 #include "io/hdf5_attr.h"
 #include "io/hdf5_errors.h"
@@ -119,11 +120,15 @@ int checkpoint_seal(const char *path)
 
 /* ---- writing ----------------------------------------------------------------------------- */
 
+/* The format marker, and the vcsph that wrote the file: an attribute that the reader does not
+ * ask for, so that checkpoints written before it existed load as they did. */
 static int write_marker(hid_t file)
 {
     const int version = CHECKPOINT_VERSION;
     return hdf5_attr_write_string(file, "format", CHECKPOINT_FORMAT) ||
-                   hdf5_attr_write_scalar(file, "version", H5T_STD_I32LE, H5T_NATIVE_INT, &version)
+                   hdf5_attr_write_scalar(file, "version", H5T_STD_I32LE, H5T_NATIVE_INT,
+                                          &version) ||
+                   hdf5_attr_write_string(file, "vcsph_version", vcsph_version())
                ? -1
                : 0;
 }

@@ -1,6 +1,7 @@
 /* snapshot: particle fields to HDF5 files (design §5) and the XDMF index ParaView opens. */
 #include "io/snapshot.h"
 #include "io/atomic_file.h"
+#include "core/version.h"
 #include "io/hdf5_attr.h"
 #include "io/hdf5_errors.h"
 #include "io/io_error.h"
@@ -128,6 +129,11 @@ static int write_attrs(hid_t file, const snapshot_attrs *a, const report *r)
     }
     if (hdf5_attr_write_string(file, "case", a->case_text) < 0) {
         fail_hdf5(r, "cannot write attribute", "case");
+        return -1;
+    }
+    /* the vcsph that wrote the file (core/version.h) */
+    if (hdf5_attr_write_string(file, "vcsph_version", vcsph_version()) < 0) {
+        fail_hdf5(r, "cannot write attribute", "vcsph_version");
         return -1;
     }
     return 0;

@@ -16,6 +16,8 @@ typedef struct {
     const void *component[3]; /* ncomp pointers to n values each */
 } snapshot_field;
 
+/* The file's attributes, one each; besides them every snapshot holds the string attribute
+ * vcsph_version, the vcsph that wrote it (core/version.h). */
 typedef struct {
     double time;
     long step;
