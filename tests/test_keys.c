@@ -214,7 +214,7 @@ static void test_check_print_loads_back(void **state)
     char path[600];
     snprintf(path, sizeof path, "%s/sway.ini", fx->dir);
     text_file_write(path, print_case);
-    const char *set[] = {"numerics.resolution=4", "model.scheme=delta"};
+    const char *set[] = {"numerics.resolution=8", "model.scheme=delta"};
     int rc = vcsph_child_run(fx->dir,
                              (const char *const[]){"check", "--print", "sway.ini", "--set", set[0],
                                                    "--set", set[1], "-o", "res", NULL},

@@ -22,9 +22,8 @@ typedef struct {
     double g_max;        /* largest effective gravity of the motion */
     double c0;           /* sound speed, given or 10 sqrt(2 g_max H) (Eq. 6) */
     double u_tank_max;   /* largest tank speed of the motion (motion_max_speed) */
-    double u_fall;       /* speed of a fall from H under g_max, sqrt(2 g_max H) */
     double c0_eq6;       /* Eq. (6)'s estimate, 10 max(sqrt(g_max H), U_max) with
-                            U_max = max(u_tank_max, u_fall): the sanity check's lower bound */
+                            U_max = u_tank_max: the sanity check's lower bound */
     double excursion[3]; /* half the range of the tank's driven displacement per axis */
     double k_c;          /* CFL number (Table 1 unless given) */
     double dt_v, dt_c, dt_a, dt_st, dt; /* Eq. (8); dt_a estimated with g_max */
