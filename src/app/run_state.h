@@ -5,6 +5,7 @@
 #define VCSPH_RUN_STATE_H
 
 #include "app/progress.h"
+#include "app/threads.h"
 #include "app/simulation.h"
 #include "diag/probes.h"
 #include "io/checkpoint.h"
@@ -44,6 +45,7 @@ typedef struct {
     int speed_warned; /* U_max > c0/10 reported and not yet back below */
     int speed_told;   /* the first such report was printed (this invocation) */
     progress pr;
+    thread_tuner threads;   /* the thread count, measured as the run goes (threads.h) */
     double next_checkpoint; /* wall-clock time (progress_wall_time) of the next checkpoint */
     /* a restarted run: the sizes its CSV files had at the checkpoint (-1: not written) */
     bool resumed;

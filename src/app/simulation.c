@@ -5,6 +5,7 @@
 #include "app/motion_table.h"
 #include "app/output_folder.h"
 #include "app/run_summary.h"
+#include "app/threads.h"
 #include "app/progress.h"
 #include "app/run_state.h"
 #include "core/estimate.h"
@@ -161,6 +162,10 @@ static int rows_lost(run *r)
  * begins here, with the state of the checkpoint. */
 static int finish_step(run *r)
 {
+    if (thread_tuner_step(&r->threads, progress_wall_time(), r->s.step))
+        log_info("vcsph: at t = %.4g s one thread ran faster than %d (another process shares "
+                 "the cores?): the run measures again every %g s and takes the faster",
+                 r->s.t, r->threads.max, THREADS_WINDOW_S * (THREADS_KEEP_WINDOWS + 2));
     if (prepare(r)) return RUN_FAILED;
     control_step(r);
     int last = r->s.t >= r->cfg->t_end;
@@ -214,6 +219,7 @@ static int time_loop(run *r)
     int status;
     progress_start(&r->pr, s->t, cfg->t_end, s->p.n_fluid, s->step, r->opt->quiet);
     r->next_checkpoint = progress_wall_time() + cfg->checkpoint_every;
+    thread_tuner_start(&r->threads, progress_wall_time(), s->step);
     if (r->resumed) {
         if ((status = finish_step(r))) return status;
     } else {
@@ -395,6 +401,7 @@ static int run_case_with(config *cfg, const run_options *opt, const checkpoint_d
     run_out_path(&r, checkpoint, sizeof checkpoint, "checkpoint.h5");
     interrupt_install(checkpoint);
     status = time_loop(&r);
+    thread_tuner_stop(&r.threads);
     interrupt_restore();
     log_summary(opt->output_dir);
     /* the steps of this invocation: a restarted run counts from its checkpoint */

@@ -1,0 +1,58 @@
+/* threads: the thread count of a run, chosen by measurement (threads.h). */
+#include "app/threads.h"
+
+#include <omp.h>
+
+enum { THREADS_TRY_MAX, THREADS_TRY_ONE, THREADS_KEEP };
+
+static void use(thread_tuner *tt, int n)
+{
+    tt->current = n;
+    omp_set_num_threads(n);
+}
+
+void thread_tuner_start(thread_tuner *tt, double wall, long step)
+{
+    tt->max = omp_get_max_threads();
+    tt->current = tt->max;
+    tt->phase = THREADS_TRY_MAX;
+    tt->windows_left = 0;
+    tt->window_start = wall;
+    tt->step_start = step;
+    tt->rate_max = 0.0;
+    tt->reduced_told = false;
+}
+
+void thread_tuner_stop(thread_tuner *tt)
+{
+    if (tt->max > 0) use(tt, tt->max);
+}
+
+bool thread_tuner_step(thread_tuner *tt, double wall, long step)
+{
+    double elapsed = wall - tt->window_start;
+    if (tt->max <= 1 || elapsed < THREADS_WINDOW_S) return false;
+    double rate = (double)(step - tt->step_start) / elapsed;
+    bool tell = false;
+    switch (tt->phase) {
+    case THREADS_TRY_MAX:
+        tt->rate_max = rate;
+        tt->phase = THREADS_TRY_ONE;
+        use(tt, 1);
+        break;
+    case THREADS_TRY_ONE:
+        tt->phase = THREADS_KEEP;
+        tt->windows_left = THREADS_KEEP_WINDOWS;
+        use(tt, rate > tt->rate_max ? 1 : tt->max);
+        tell = tt->current == 1 && !tt->reduced_told;
+        tt->reduced_told |= tell;
+        break;
+    default:
+        if (--tt->windows_left > 0) break;
+        tt->phase = THREADS_TRY_MAX;
+        use(tt, tt->max);
+    }
+    tt->window_start = wall;
+    tt->step_start = step;
+    return tell;
+}
