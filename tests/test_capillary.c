@@ -114,7 +114,7 @@ static void run_ellipse_steps(int threads, double *out)
 }
 
 /* The surface-tension force, its union-find and its sums do not depend on the thread count
- * (design §2): the same bytes on one and two threads. */
+ * (docs/architecture.md): the same bytes on one and two threads. */
 static void test_thread_count_independent(void **state)
 {
     (void)state;

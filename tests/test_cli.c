@@ -1,8 +1,8 @@
-/* The vcsph command as a user meets it (design §1-§3): the real binary, run in a temporary
- * folder with its stdout and stderr in files. Bad input of every kind exits 2 with one message
- * naming where the mistake is and writes nothing; `check` prints the derived numbers and writes
- * nothing; `run` writes the files of design §1 with the time series of §4; a numerical
- * breakdown exits 3 and leaves a snapshot and an event behind. */
+/* The vcsph command as a user meets it (README.md and docs/case-file.md): the real binary, run in a
+ * temporary folder with its stdout and stderr in files. Bad input of every kind exits 2 with one
+ * message naming where the mistake is and writes nothing; `check` prints the derived numbers and
+ * writes nothing; `run` writes the files of README.md with the time series of docs/outputs.md; a
+ * numerical breakdown exits 3 and leaves a snapshot and an event behind. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -116,7 +116,8 @@ static void assert_folder_holds(const fixture *fx, const char *const *expected)
     assert_int_equal(seen, n_expected);
 }
 
-/* ---- bad input: exit 2, one message that says where, nothing written (design §2) ------------- */
+/* ---- bad input: exit 2, one message that says where, nothing written (docs/architecture.md)
+ * ------------- */
 
 /* The good case that the bad ones vary; line numbers in the comments on the right. */
 #define BASE_CASE                                                                                  \
@@ -245,7 +246,7 @@ static void test_bad_input(void **state)
     int rc = run_vcsph(fx, bc->args);
     char *out = read_file(fx, "stdout.txt"), *err = read_file(fx, "stderr.txt");
     if (rc != 2) print_error("%s: stderr:\n%s", bc->name, err);
-    assert_int_equal(rc, 2); /* design §2: bad input exits 2 */
+    assert_int_equal(rc, 2); /* docs/architecture.md: bad input exits 2 */
     for (int k = 0; k < 4 && bc->expect[k]; k++) assert_contains(err, bc->expect[k]);
     assert_int_equal(count_lines(err), 1); /* "one clear message" */
     assert_string_equal(out, "");
@@ -298,7 +299,7 @@ static void test_check_prints_derived_numbers(void **state)
     assert_int_equal(rc, 0);
     assert_string_equal(err, "");
 
-    /* Expected figures from theory: dr = H/N; h = 2 dr in 2D (design §3); sway a_x peaks at
+    /* Expected figures from theory: dr = H/N; h = 2 dr in 2D (docs/case-file.md); sway a_x peaks at
      * A w^2, so g_max = sqrt(g^2 + (A w^2)^2) (theory §6) and c0 = 10 sqrt(2 g_max H) (Eq. 6);
      * dt = min(0.125 h^2/nu, 0.25 sqrt(h/g_max), K_c h/c0), K_c = 1.3 for delta-plus-ale
      * (Eq. 8, Table 1); M_L = rho0 L H, dW = M_L (A w)^2 / (2 T) (Table 3). */
@@ -341,7 +342,7 @@ static const char tiny_case[] = "[case]\n"
                                 "timeseries_every = 0.01\n"
                                 "snapshot_every = 0.02\n";
 
-/* Design §4, in its order. */
+/* The first columns of timeseries.csv, in order (docs/outputs.md). */
 static const char *const series_columns[] = {
     "t",      "step",    "dt",       "n_fluid", "eps_v1", "eps_v2",  "eps_v3",
     "eps_gm", "eps_sph", "mass_err", "eta",     "edbc",   "n_edbc",  "n_free_surface",
@@ -397,7 +398,7 @@ static void test_run_writes_outputs(void **state)
     }
     assert_int_equal(rc, 0);
 
-    /* timeseries.csv: the columns of design §4 in order (§4 allows more after them) */
+    /* timeseries.csv: the columns of docs/outputs.md in order (more may come after them) */
     path_in(fx, "res/timeseries.csv", path, sizeof path);
     table ts;
     assert_int_equal(table_read(&ts, path), 0);
@@ -443,7 +444,7 @@ static void test_breakdown_exits_3(void **state)
                "[output]\ntimeseries_every = 0.01\nsnapshot_every = 0.02\n");
     int rc = run_vcsph(fx, (const char *const[]){"run", "heave.ini", "-o", "res", "--quiet", NULL});
     char *err = read_file(fx, "stderr.txt");
-    assert_int_equal(rc, 3); /* design §2 */
+    assert_int_equal(rc, 3); /* docs/architecture.md */
 
     /* "breakdown at t = <t> s, step <n>: particle id <id> ..." */
     assert_contains(err, "particle id");

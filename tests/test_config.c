@@ -1,5 +1,5 @@
-/* Tests of the case-file parser (design §3): defaults, a full file, one test per kind of bad
- * input (each must give exit status 2 and a message naming file, line and key), overrides, and
+/* Tests of the case-file parser (docs/case-file.md): defaults, a full file, one test per kind of
+ * bad input (each must give exit status 2 and a message naming file, line and key), overrides, and
  * the round trip config_write -> config_load. */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -347,7 +347,8 @@ static void test_scheme_dependent_defaults(void **state)
     assert_non_null(strstr(err, "model.volume_correction"));
 }
 
-/* Every key of design §3 is written, each section once, in the design's order. */
+/* Every key of docs/case-file.md is written, each section once, in the order of docs/case-file.md.
+ */
 static void test_write_has_every_key(void **state)
 {
     (void)state;
@@ -368,7 +369,7 @@ static void test_write_has_every_key(void **state)
         if (*line == '\n') line++;
         if (*line && *line != ';' && *line != '[' && *line != '\n') n_keys++;
     }
-    /* design §3 plus numerics.density_bound, liquid.shape, case.experiment_dissipation and
+    /* docs/case-file.md plus numerics.density_bound, liquid.shape, case.experiment_dissipation and
        model.volume_correction */
     assert_int_equal(n_keys, 43);
     assert_non_null(strstr(text, "\nsound_speed      = auto ;"));

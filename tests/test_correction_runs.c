@@ -101,8 +101,8 @@ static void test_sloshing_period_unchanged(void **state)
 }
 
 /* With the correction on (delta-plus-ALE's default), INM2 at N = 10 over 2 s writes the same
- * bytes on 1 and 2 threads (design §2), and the total mass stays exact (constant masses in the
- * eta = 0 regime; the correction moves no mass): |mass_err| below 1e-12, round-off. */
+ * bytes on 1 and 2 threads (docs/architecture.md), and the total mass stays exact (constant masses
+ * in the eta = 0 regime; the correction moves no mass): |mass_err| below 1e-12, round-off. */
 static void test_threads_and_mass(void **state)
 {
     (void)state;

@@ -157,7 +157,7 @@ static void test_signs_of_theory(void **state)
 
 /* ---- duration ------------------------------------------------------------------------------- */
 
-/* design §3: after `duration` the tank acceleration is zero (exactly: no force at all), and
+/* docs/case-file.md: after `duration` the tank acceleration is zero (exactly: no force at all), and
  * before it the motion is the periodic one (rounding tolerance as above). */
 static void test_duration_stops_acceleration(void **state)
 {

@@ -1,4 +1,4 @@
-/* `vcsph plot OUTDIR` (design §1): the real binary plots a real run and hand-written output
+/* `vcsph plot OUTDIR` (README.md): the real binary plots a real run and hand-written output
  * folders; every PNG it names is read back and must hold a drawn curve. Bad input exits 2
  * without writing anything; a missing gnuplot exits 1 and says so. The tests that need gnuplot
  * skip without it. */
@@ -225,7 +225,7 @@ static void test_plot_real_run(void **state)
 
 /* ---- hand-written output folders: every plot, every option ---------------------------------- */
 
-/* Five rows of design §4's columns and the two that vcsph adds; eps_gm computed in some rows
+/* Five rows of docs/outputs.md's columns and the two that vcsph adds; eps_gm computed in some rows
  * only, eta switched on at t = 0.2, a surface energy. */
 static const char series[] =
     "t,step,dt,n_fluid,eps_v1,eps_v2,eps_v3,eps_gm,eps_sph,mass_err,eta,edbc,n_edbc,"

@@ -1,7 +1,7 @@
-/* Checkpoints and `vcsph run --restart` (design §1, §2), with the real binary as a user meets
- * it. A short delta-plus-ALE sloshing run (2D, N = 10, adaptive eta control with its history,
- * EdBC toggled with eta = 0, probes, dissipation per period, snapshots and images) is stopped
- * and continued:
+/* Checkpoints and `vcsph run --restart` (README.md, docs/architecture.md), with the real binary as
+ * a user meets it. A short delta-plus-ALE sloshing run (2D, N = 10, adaptive eta control with its
+ * history, EdBC toggled with eta = 0, probes, dissipation per period, snapshots and images) is
+ * stopped and continued:
  * - SIGTERM once it has made progress: exit 4 with a checkpoint, then --restart;
  * - kill -9 at a few times (one of them twice, the restarted run killed again), then
  *   --restart from the last checkpoint written every output.checkpoint_every wall seconds;
@@ -657,8 +657,8 @@ static int64_t checkpoint_step(const char *name)
     return step;
 }
 
-/* design §2 and issue 8: a breakdown exits 3 and leaves the checkpoint of the step before it,
- * which continues into the same breakdown, and leaves it again. */
+/* docs/architecture.md and issue 8: a breakdown exits 3 and leaves the checkpoint of the step
+ * before it, which continues into the same breakdown, and leaves it again. */
 static void test_breakdown_keeps_the_last_good_checkpoint(void **state)
 {
     (void)state;

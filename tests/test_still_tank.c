@@ -1,6 +1,7 @@
 /* Integration: a tank at rest with delta-SPH (N = 20, 1 s, 2D). The hydrostatic initial state
  * of sec. 2.1 must stay at rest: the figures asserted here are those of the issue, with their
- * reasons beside them. Also: the run is byte-identical on 1 and 2 threads (design §2). */
+ * reasons beside them. Also: the run is byte-identical on 1 and 2 threads (docs/architecture.md).
+ */
 #include "app/simulation.h"
 
 #include <hdf5.h>

@@ -1,4 +1,4 @@
-/* cli: the command line (design §1). */
+/* cli: the command line (README.md). */
 #ifndef VCSPH_CLI_H
 #define VCSPH_CLI_H
 

@@ -1,4 +1,4 @@
-/* main: the vcsph command; the only place that decides exit statuses (design §2). */
+/* main: the vcsph command; the only place that decides exit statuses (docs/architecture.md). */
 #include "app/cli.h"
 #include "app/plot_command.h"
 #include "app/simulation.h"
@@ -97,7 +97,7 @@ static int volume_of_snapshots(char **paths, int n)
     return RUN_OK;
 }
 
-/* `vcsph plot`: one line naming what was written (design §1). */
+/* `vcsph plot`: one line naming what was written (README.md). */
 static int plot_run_dir(const char *dir)
 {
     plot_report report;

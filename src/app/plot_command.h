@@ -1,12 +1,13 @@
-/* plot_command: `vcsph plot OUTDIR`, PNG plots of a run's CSV outputs (design §1 and §4) drawn
- * by gnuplot from a script left in OUTDIR/images/plot.gp, so that a user can edit and rerun it
+/* plot_command: `vcsph plot OUTDIR`, PNG plots of a run's CSV outputs (README.md and
+ * docs/outputs.md) drawn by gnuplot from a script left in OUTDIR/images/plot.gp, so that a user can
+ * edit and rerun it
  * (`cd OUTDIR/images && gnuplot plot.gp`). */
 #ifndef VCSPH_PLOT_COMMAND_H
 #define VCSPH_PLOT_COMMAND_H
 
 #include <stddef.h>
 
-/* Statuses, the exit statuses of design §2 */
+/* Statuses, the exit statuses of docs/architecture.md */
 enum { PLOT_OK = 0, PLOT_FAILED = 1, PLOT_BAD_INPUT = 2 };
 
 typedef struct {

@@ -1,4 +1,4 @@
-/* run_outputs: the files a run writes (design §1, §4, §5): the output folder, the CSV files
+/* run_outputs: the files a run writes (docs/outputs.md): the output folder, the CSV files
  * and their rows, snapshots with their XDMF index, particle images; opened fresh or rewound
  * for a restart. The time loop (simulation.c) decides when each is due. */
 #include "app/output_folder.h"
@@ -82,7 +82,7 @@ static double dissipated_energy(run *r, double energy)
  * that reconnections release without the discrete force having done the work (docs/energy.md). */
 static double surface_loss(run *r, double esurf) { return -(r->s.work_st + esurf); }
 
-/* One row of probes.csv: t, then the gauges, then the pressure probes (design §3). */
+/* One row of probes.csv: t, then the gauges, then the pressure probes (docs/case-file.md). */
 void run_write_probes_row(run *r)
 {
     const config *cfg = r->cfg;
@@ -95,7 +95,7 @@ void run_write_probes_row(run *r)
     csv_end_row(c);
 }
 
-/* One row of timeseries.csv (design §4). The volume columns need this step's geometry
+/* One row of timeseries.csv (docs/outputs.md). The volume columns need this step's geometry
  * (solver_prepare at the current state); a breakdown row has none and leaves them empty. */
 void run_write_series_row(run *r, int with_geometry)
 {
@@ -179,7 +179,7 @@ void run_write_series_row(run *r, int with_geometry)
     r->speed_warned = fast;
 }
 
-/* The fields of design §5 (lambda, surface and eps_vi from the geometry of this step). */
+/* The fields of docs/outputs.md (lambda, surface and eps_vi from the geometry of this step). */
 static int snapshot_fields(solver *s, snapshot_field *f)
 {
     particles *p = &s->p;
@@ -275,7 +275,7 @@ static int rewind_xdmf(run *r)
     return remove(path) == 0 || errno == ENOENT ? 0 : -1;
 }
 
-/* Particle images (design §1): the local volume error eps_Vi of every particle, like the
+/* Particle images (README.md): the local volume error eps_Vi of every particle, like the
  * paper's Figs. 13 and 21; a 3D run shows its mid-width slice, the particles within 0.6 dr of
  * z = W/2 (one lattice layer, or the two either side of the middle). The colour bar reads in
  * per cent, the axes in metres. */
@@ -335,7 +335,7 @@ static int open_csv(run *r, int k, const char *header)
     return csv_open(run_csv(r, k), path, header);
 }
 
-/* probes.csv with the header t,gauge_1..,pressure_1.. (design §3) */
+/* probes.csv with the header t,gauge_1..,pressure_1.. (docs/case-file.md) */
 static int open_probes(run *r)
 {
     const config *cfg = r->cfg;

@@ -106,7 +106,7 @@ void run_event(run *r, const char *what, const char *detail);
 /* Creates the output folder and its files, or for a restarted run (r->resumed) reopens them
  * at their sizes at the checkpoint and removes what was written after it. Returns 0 or -1. */
 int run_open_outputs(run *r);
-/* One row of timeseries.csv (design §4); with_geometry 0 (a breakdown row): the volume
+/* One row of timeseries.csv (docs/outputs.md); with_geometry 0 (a breakdown row): the volume
  * columns empty. Raises the U_max > c0/10 event once per crossing. */
 void run_write_series_row(run *r, int with_geometry);
 /* One row of probes.csv. */

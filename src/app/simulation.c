@@ -1,5 +1,5 @@
-/* simulation: the time loop (design §1, §2): what is due when, breakdowns, checkpoints,
- * start and restart; the files themselves are run_outputs.c's. */
+/* simulation: the time loop (README.md, docs/architecture.md): what is due when, breakdowns,
+ * checkpoints, start and restart; the files themselves are run_outputs.c's. */
 #include "app/simulation.h"
 #include "app/interrupt.h"
 #include "app/motion_table.h"
@@ -116,7 +116,7 @@ static int outputs_due(run *r, int last)
     return 0;
 }
 
-/* Stops the run on a breakdown (design §2): message, event, a last row and snapshot. */
+/* Stops the run on a breakdown (docs/architecture.md): message, event, a last row and snapshot. */
 static int breakdown(run *r)
 {
     char msg[512];
@@ -372,7 +372,8 @@ static int run_case_with(config *cfg, const run_options *opt, const checkpoint_d
     int status = set_up_run(&r, cfg, cd, err, sizeof err);
     r.opt = opt;
     if (status == RUN_OK) status = claim_output_folder(&r, cd == NULL, err, sizeof err);
-    /* a checkpoint that does not fit is refused before any file is touched (design §2) */
+    /* a checkpoint that does not fit is refused before any file is touched (docs/architecture.md)
+     */
     if (status == RUN_OK && cd && restart_check_outputs(&r, err, sizeof err))
         status = RUN_BAD_INPUT;
     if (status == RUN_OK && table &&

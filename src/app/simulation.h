@@ -13,7 +13,7 @@ typedef struct {
     bool overwrite; /* a fresh run removes an earlier run's files there instead of refusing */
 } run_options;
 
-/* Exit statuses (design §2). RUN_INTERRUPTED: SIGTERM or SIGINT stopped the run after a
+/* Exit statuses (docs/architecture.md). RUN_INTERRUPTED: SIGTERM or SIGINT stopped the run after a
  * step, and its state is in OUTDIR/checkpoint.h5 (`vcsph run --restart` continues it). */
 enum { RUN_OK = 0, RUN_FAILED = 1, RUN_BAD_INPUT = 2, RUN_BREAKDOWN = 3, RUN_INTERRUPTED = 4 };
 

@@ -1,5 +1,5 @@
-/* config: reads a case file (design §3) with inih, checks every value, resolves the defaults
- * that depend on other keys, and writes the resolved case back out. */
+/* config: reads a case file (docs/case-file.md) with inih, checks every value, resolves the
+ * defaults that depend on other keys, and writes the resolved case back out. */
 #include "core/config.h"
 
 #include <ctype.h>
@@ -127,7 +127,7 @@ static const char *const sections[] = {"case",  "tank",     "liquid", "fluid", "
                                        "model", "numerics", "probes", "output"};
 #define N_SECTIONS (sizeof sections / sizeof sections[0])
 
-/* Design §3, in its order (config_write follows this table). */
+/* The case file, section by section (docs/case-file.md; config_write follows this table). */
 static const key_spec keys[] = {
     KEY("case", "name", KIND_NAME, KEY_DERIVED, "<file base name>", name, ANY, NULL,
         "a name of letters, digits, '.', '_' and '-' starting with a letter or digit",

@@ -1,4 +1,4 @@
-/* config: the case file (design §3) read with inih, validated, immutable afterwards. */
+/* config: the case file (docs/case-file.md) read with inih, validated, immutable afterwards. */
 #ifndef VCSPH_CONFIG_H
 #define VCSPH_CONFIG_H
 
@@ -104,7 +104,7 @@ void config_write(const config *cfg, FILE *out);
  * default), what is allowed, and its meaning. `vcsph keys` prints it. */
 void config_write_keys(FILE *out);
 
-/* The spellings of the case file (design §3), e.g. "delta-plus-ale", "with-eta0". */
+/* The spellings of the case file (docs/case-file.md), e.g. "delta-plus-ale", "with-eta0". */
 const char *config_scheme_name(scheme_kind s);
 const char *config_motion_name(motion_kind m);
 const char *config_edbc_name(edbc_mode e);

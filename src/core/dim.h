@@ -1,5 +1,5 @@
 /* dim: compile-time number of space dimensions and the symbol suffix that lets the 2D and 3D
- * builds of the particle code live in one binary (design §2). */
+ * builds of the particle code live in one binary (docs/architecture.md). */
 #ifndef VCSPH_DIM_H
 #define VCSPH_DIM_H
 

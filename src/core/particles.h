@@ -1,5 +1,5 @@
 /* particles: the SoA particle store. Fluid particles occupy [0, n_fluid), wall ghosts the
- * tail [n_fluid, n_total) (where MPI halo particles will also go, design §2). */
+ * tail [n_fluid, n_total) (where MPI halo particles will also go, docs/architecture.md). */
 #ifndef VCSPH_PARTICLES_H
 #define VCSPH_PARTICLES_H
 

@@ -1,4 +1,4 @@
-/* reduce: every global reduction of the solver goes through here (design §2), in a fixed
+/* reduce: every global reduction of the solver goes through here (docs/architecture.md), in a fixed
  * order, so that results do not depend on the number of threads (and MPI_Allreduce can drop
  * in later). */
 #ifndef VCSPH_REDUCE_H

@@ -1,5 +1,5 @@
-/* health: detection of a numerical breakdown (design §2): a NaN, a particle outside the tank,
- * or a density outside rho0 (1 +- numerics.density_bound), 0.2 unless the case says. */
+/* health: detection of a numerical breakdown (docs/architecture.md): a NaN, a particle outside the
+ * tank, or a density outside rho0 (1 +- numerics.density_bound), 0.2 unless the case says. */
 #ifndef VCSPH_HEALTH_H
 #define VCSPH_HEALTH_H
 

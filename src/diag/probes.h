@@ -1,4 +1,4 @@
-/* probes: wave gauges and pressure probes (design §3 [probes]), SPH interpolations of the
+/* probes: wave gauges and pressure probes (docs/case-file.md [probes]), SPH interpolations of the
  * particle state at fixed points of the tank frame, for probes.csv. */
 #ifndef VCSPH_PROBES_H
 #define VCSPH_PROBES_H

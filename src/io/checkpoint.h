@@ -1,5 +1,5 @@
 /* checkpoint: a set of named one-dimensional arrays in one HDF5 file, written atomically and
- * read back only whole and verified (design §1: checkpoint.h5). It knows nothing of particles
+ * read back only whole and verified (README.md: checkpoint.h5). It knows nothing of particles
  * or dimensions: app/restart.c decides what the arrays hold.
  *
  * File layout (format CHECKPOINT_FORMAT, version CHECKPOINT_VERSION):

@@ -1,4 +1,4 @@
-/* image: particle images as PNG files (design §1: the PNG files under images/): discs coloured by a
+/* image: particle images as PNG files (README.md: the PNG files under images/): discs coloured by a
  * field with a colour bar, the tank outline with axes in metres, and the time.
  *
  * Our own rasteriser; libpng only encodes. Dimension-free: a 3D caller passes the projection it

@@ -1,4 +1,4 @@
-/* snapshot: particle fields to HDF5 files (design §5) and the XDMF index ParaView opens. */
+/* snapshot: particle fields to HDF5 files (docs/outputs.md) and the XDMF index ParaView opens. */
 #include "io/snapshot.h"
 #include "io/atomic_file.h"
 #include "core/version.h"
@@ -154,14 +154,14 @@ static void copy_strided(unsigned char *dst, size_t stride, const unsigned char 
     }
 }
 
-/* Creates an n-row dataset: 1-D when ncomp == 1, n x ncomp otherwise (design §5). */
+/* Creates an n-row dataset: 1-D when ncomp == 1, n x ncomp otherwise (docs/outputs.md). */
 static hid_t create_dataset(hid_t file, const char *name, field_type type, size_t n, int ncomp)
 {
     hsize_t dims[2] = {n, (hsize_t)ncomp};
     hid_t space = H5Screate_simple(ncomp > 1 ? 2 : 1, dims, NULL);
     if (space < 0) return H5I_INVALID_HID;
     /* no modification times in the object headers: the same state gives the same bytes
-       (runs are compared byte for byte, design §2) */
+       (runs are compared byte for byte, docs/architecture.md) */
     hid_t dcpl = H5Pcreate(H5P_DATASET_CREATE);
     H5Pset_obj_track_times(dcpl, 0);
     hid_t dset =

@@ -1,4 +1,4 @@
-/* snapshot: particle fields to HDF5 files (design §5) and the XDMF index ParaView opens. */
+/* snapshot: particle fields to HDF5 files (docs/outputs.md) and the XDMF index ParaView opens. */
 #ifndef VCSPH_SNAPSHOT_H
 #define VCSPH_SNAPSHOT_H
 

@@ -1,4 +1,4 @@
-/* snapshot_read: HDF5 reading of our own snapshot layout (design §5). */
+/* snapshot_read: HDF5 reading of our own snapshot layout (docs/outputs.md). */
 #include "io/snapshot_read.h"
 #include "io/hdf5_attr.h"
 

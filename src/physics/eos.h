@@ -13,7 +13,7 @@ static inline double eos_pressure(double rho, double rho0, double c0)
 static inline double eos_density(double p, double rho0, double c0) { return rho0 + p / (c0 * c0); }
 
 /* Specific internal energy of the linear EOS: e = int p/rho^2 drho from rho0
- *   = c0^2 (ln(rho/rho0) + rho0/rho - 1)   (design §4, theory §10) */
+ *   = c0^2 (ln(rho/rho0) + rho0/rho - 1)   (docs/outputs.md, theory §10) */
 static inline double eos_internal_energy(double rho, double rho0, double c0)
 {
     return c0 * c0 * (log(rho / rho0) + rho0 / rho - 1.0);

@@ -8,10 +8,10 @@
 #include "scheme/pair.h"
 
 /* One particle's sums. `les`, `ale` and `variable_mass` are compile-time constants at each
- * call below, so the loop is specialised once per loop, never tested per pair (design §2).
- * With ale (shifting on, Eq. 3): the particles move with u + du, the continuity equation
- * gains -rho_i du_ji . grad W V_j and the flux div(rho du), the momentum equation
- * rho (du . grad) u, and with variable masses dm/dt = eta [div(rho du) V_i + D^m]. */
+ * call below, so the loop is specialised once per loop, never tested per pair
+ * (docs/architecture.md). With ale (shifting on, Eq. 3): the particles move with u + du, the
+ * continuity equation gains -rho_i du_ji . grad W V_j and the flux div(rho du), the momentum
+ * equation rho (du . grad) u, and with variable masses dm/dt = eta [div(rho du) V_i + D^m]. */
 static inline void rhs_particle(const physics_params *pp, const particles *p,
                                 const neighbour_list *nl, size_t i, vec g_eff, const bool les,
                                 const bool ale, const bool variable_mass, double eta,

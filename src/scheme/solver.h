@@ -1,4 +1,4 @@
-/* solver: the state of a run and one time step (design §2): neighbours and ghosts, the
+/* solver: the state of a run and one time step (docs/architecture.md): neighbours and ghosts, the
  * frozen per-step fields and bounce-back, four RK4 stages. */
 #ifndef VCSPH_SOLVER_H
 #define VCSPH_SOLVER_H
