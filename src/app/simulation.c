@@ -162,7 +162,9 @@ static int rows_lost(run *r)
  * begins here, with the state of the checkpoint. */
 static int finish_step(run *r)
 {
-    if (thread_tuner_step(&r->threads, progress_wall_time(), r->s.step))
+    double wall = progress_wall_time();
+    if (thread_tuner_due(&r->threads, wall) &&
+        thread_tuner_step(&r->threads, wall, threads_run_delay(), r->s.step))
         log_info("vcsph: at t = %.4g s one thread ran faster than %d (another process shares "
                  "the cores?): the run measures again every %g s and takes the faster",
                  r->s.t, r->threads.max, THREADS_WINDOW_S * (THREADS_KEEP_WINDOWS + 2));
@@ -219,7 +221,7 @@ static int time_loop(run *r)
     int status;
     progress_start(&r->pr, s->t, cfg->t_end, s->p.n_fluid, s->step, r->opt->quiet);
     r->next_checkpoint = progress_wall_time() + cfg->checkpoint_every;
-    thread_tuner_start(&r->threads, progress_wall_time(), s->step);
+    thread_tuner_start(&r->threads, progress_wall_time(), threads_run_delay(), s->step);
     if (r->resumed) {
         if ((status = finish_step(r))) return status;
     } else {
