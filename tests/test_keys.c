@@ -197,17 +197,6 @@ static char *read_in(const temp_fixture *fx, const char *name)
     return text_file_read(path);
 }
 
-static char *written(const config *c)
-{
-    char *buf = NULL;
-    size_t len = 0;
-    FILE *f = open_memstream(&buf, &len);
-    assert_non_null(f);
-    config_write(c, f);
-    fclose(f);
-    return buf;
-}
-
 static void test_check_print_loads_back(void **state)
 {
     temp_fixture *fx = *state;
@@ -240,7 +229,8 @@ static void test_check_print_loads_back(void **state)
     memset(direct.output_dir, 0, sizeof direct.output_dir);
     snprintf(direct.output_dir, sizeof direct.output_dir, "res");
     assert_memory_equal(&printed, &direct, sizeof direct);
-    char *again = written(&printed);
+    char *again = config_text(&printed);
+    assert_non_null(again);
     assert_string_equal(out, again); /* and writes itself again */
     free(again);
 

@@ -35,13 +35,19 @@ static bool window(thread_tuner *tt, clocks *c, long steps, double waiting)
     return told;
 }
 
+/* A tuner started with `threads` allowed, on clocks at c. */
+static void start(thread_tuner *tt, int threads, clocks c)
+{
+    omp_set_num_threads(threads);
+    thread_tuner_start(tt, c.wall, c.delay, c.step);
+}
+
 static void test_one_thread_wins_on_a_busy_machine(void **state)
 {
     (void)state;
-    omp_set_num_threads(2);
     thread_tuner tt;
     clocks c = {100.0, 3.0, 0};
-    thread_tuner_start(&tt, c.wall, c.delay, c.step);
+    start(&tt, 2, c);
     assert_int_equal(tt.current, 2);
     assert_false(window(&tt, &c, 50, 0.3)); /* 2 threads: 25 steps/s, waiting 30 % */
     assert_int_equal(tt.current, 1);
@@ -62,10 +68,9 @@ static void test_one_thread_wins_on_a_busy_machine(void **state)
 static void test_one_thread_never_tried_on_an_idle_machine(void **state)
 {
     (void)state;
-    omp_set_num_threads(2);
     thread_tuner tt;
     clocks c = {0.0, 0.0, 0};
-    thread_tuner_start(&tt, c.wall, c.delay, c.step);
+    start(&tt, 2, c);
     for (int k = 0; k < 3 * THREADS_KEEP_WINDOWS; k++) {
         window(&tt, &c, 90, 0.001);
         assert_int_equal(tt.current, 2);
@@ -75,10 +80,9 @@ static void test_one_thread_never_tried_on_an_idle_machine(void **state)
 static void test_unknown_delay_tries_one_thread(void **state)
 {
     (void)state;
-    omp_set_num_threads(2);
     thread_tuner tt;
     clocks c = {0.0, -1.0, 0};
-    thread_tuner_start(&tt, c.wall, c.delay, c.step);
+    start(&tt, 2, c);
     window(&tt, &c, 90, -1.0);
     assert_int_equal(tt.current, 1);
     assert_false(window(&tt, &c, 50, -1.0)); /* slower: back to 2 */
@@ -88,10 +92,9 @@ static void test_unknown_delay_tries_one_thread(void **state)
 static void test_nothing_with_one_thread(void **state)
 {
     (void)state;
-    omp_set_num_threads(1);
     thread_tuner tt;
     clocks c = {0.0, 0.0, 0};
-    thread_tuner_start(&tt, c.wall, c.delay, c.step);
+    start(&tt, 1, c);
     for (int k = 0; k < 5; k++) assert_false(window(&tt, &c, 10, 0.5));
     assert_int_equal(tt.current, 1);
 }

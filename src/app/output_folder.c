@@ -21,14 +21,17 @@ static const char *const run_files[] = {
 };
 enum { N_RUN_FILES = sizeof run_files / sizeof run_files[0] };
 
-/* The numbered files of a run, in a subfolder: folder/prefix NNNNNN suffix. */
+/* The numbered files of a run, in a subfolder: folder/prefix NNNNNN suffix; a rewind keeps
+ * those of `kind` below its count (temporary files: none). */
+enum { SNAPSHOT_FILES, IMAGE_FILES, TEMPORARY_FILES };
 static const struct {
     const char *folder, *prefix, *suffix;
+    int kind;
 } numbered_files[] = {
-    {"snapshots", "", ".h5"},
-    {"snapshots", "", ".h5.tmp"},
-    {"images", "particles_", ".png"},
-    {"images", "particles_", ".png.tmp"},
+    {"snapshots", "", ".h5", SNAPSHOT_FILES},
+    {"snapshots", "", ".h5.tmp", TEMPORARY_FILES},
+    {"images", "particles_", ".png", IMAGE_FILES},
+    {"images", "particles_", ".png.tmp", TEMPORARY_FILES},
 };
 enum { N_NUMBERED = sizeof numbered_files / sizeof numbered_files[0] };
 
@@ -135,10 +138,18 @@ static int remove_quietly(const char *path, void *data)
     return 0;
 }
 
-void output_folder_remove_numbered(const char *dir, const char *prefix, const char *suffix,
-                                   long first)
+void output_folder_rewind(const char *dir, long n_snapshots, long n_images)
 {
-    each_numbered(dir, prefix, suffix, first, remove_quietly, NULL);
+    const long kept[] = {
+        [SNAPSHOT_FILES] = n_snapshots, [IMAGE_FILES] = n_images, [TEMPORARY_FILES] = 0};
+    char path[CONFIG_PATH_MAX + 64];
+    for (int k = 0; k < N_NUMBERED; k++) {
+        snprintf(path, sizeof path, "%s/%s", dir, numbered_files[k].folder);
+        each_numbered(path, numbered_files[k].prefix, numbered_files[k].suffix,
+                      kept[numbered_files[k].kind], remove_quietly, NULL);
+    }
+    snprintf(path, sizeof path, "%s/checkpoint.h5.tmp", dir);
+    remove(path);
 }
 
 typedef struct {

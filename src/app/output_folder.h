@@ -21,9 +21,9 @@ void output_folder_release(int fd);
 /* Creates dir and its parents where missing; 0, or -1 with errno set. */
 int output_folder_make(const char *dir);
 
-/* Removes the files of `dir` named prefix NNNNNN suffix (six digits) with NNNNNN >= first. */
-void output_folder_remove_numbered(const char *dir, const char *prefix, const char *suffix,
-                                   long first);
+/* A restart's rewind of dir: removes the snapshots numbered n_snapshots on, the images
+ * numbered n_images on, and the temporary files a stopped write left. */
+void output_folder_rewind(const char *dir, long n_snapshots, long n_images);
 
 /* Whether dir holds any file that a run writes (output_folder_clear's list); one of them is
  * named in `found`. */

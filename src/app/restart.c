@@ -466,13 +466,5 @@ void restart_report_rewind(run *r)
 
 void restart_rewind_outputs(run *r)
 {
-    char dir[CONFIG_PATH_MAX + 64];
-    snprintf(dir, sizeof dir, "%s/snapshots", r->opt->output_dir);
-    output_folder_remove_numbered(dir, "", ".h5", r->n_snapshots);
-    output_folder_remove_numbered(dir, "", ".h5.tmp", 0); /* a write the end of the run cut short */
-    snprintf(dir, sizeof dir, "%s/images", r->opt->output_dir);
-    output_folder_remove_numbered(dir, "particles_", ".png", r->n_images);
-    output_folder_remove_numbered(dir, "particles_", ".png.tmp", 0);
-    snprintf(dir, sizeof dir, "%s/checkpoint.h5.tmp", r->opt->output_dir);
-    remove(dir);
+    output_folder_rewind(r->opt->output_dir, r->n_snapshots, r->n_images);
 }

@@ -34,17 +34,6 @@ static void control_step(run *r)
     if (r->s.eta_switched) run_event(r, "eta_switch", r->s.eta_switch_detail);
 }
 
-static char *resolved_case_text(const config *cfg)
-{
-    char *text = NULL;
-    size_t len = 0;
-    FILE *f = open_memstream(&text, &len);
-    if (!f) return NULL;
-    config_write(cfg, f);
-    fclose(f);
-    return text;
-}
-
 static void close_run(run *r)
 {
     csv_close(&r->timeseries);
@@ -90,11 +79,11 @@ static int output_due(double t, double every, double *next, int last)
 static double step_stop(const run *r)
 {
     const config *cfg = r->cfg;
-    double stop = cfg->t_end;
-    if (run_has_periods(r)) stop = fmin(stop, next_multiple(r->s.t, cfg->period));
-    if (cfg->timeseries_every > 0.0)
-        stop = fmin(stop, next_multiple(r->s.t, cfg->timeseries_every));
-    if (cfg->snapshot_every > 0.0) stop = fmin(stop, next_multiple(r->s.t, cfg->snapshot_every));
+    double t = r->s.t, stop = cfg->t_end;
+    if (run_has_periods(r)) stop = fmin(stop, next_multiple(t, cfg->period));
+    const double every[] = {cfg->timeseries_every, cfg->snapshot_every};
+    for (int k = 0; k < 2; k++)
+        if (every[k] > 0.0) stop = fmin(stop, next_multiple(t, every[k]));
     return stop;
 }
 
@@ -390,7 +379,7 @@ static int run_case_with(config *cfg, const run_options *opt, const checkpoint_d
         close_run(&r);
         return status;
     }
-    r.case_text = resolved_case_text(cfg);
+    r.case_text = config_text(cfg);
     if (!r.case_text || run_open_outputs(&r)) {
         log_error("vcsph: cannot write the outputs in %s: %s", opt->output_dir, strerror(errno));
         close_run(&r);

@@ -1362,6 +1362,16 @@ void config_write(const config *cfg, FILE *out)
     }
 }
 
+char *config_text(const config *cfg)
+{
+    char *text = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&text, &len);
+    if (!f) return NULL;
+    config_write(cfg, f);
+    return fclose(f) == 0 ? text : (free(text), NULL);
+}
+
 /* The default column of `vcsph keys`: the default as a file spells it, the rule of a derived
  * default, or "required". */
 static const char *key_default_text(const key_spec *k)

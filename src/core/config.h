@@ -97,6 +97,9 @@ int config_load_string(config *cfg, const char *text, const char *origin,
 /* Writes the fully resolved case (every key, defaults and overrides applied) as an INI file
  * that config_load reads back to the same struct. */
 void config_write(const config *cfg, FILE *out);
+/* config_write's text in malloc'd memory (free() it; NULL when out of memory): case.ini, the
+ * checkpoint's case. */
+char *config_text(const config *cfg);
 
 /* Writes every key of the case file, one line each, in the order of config_write, as four
  * fields separated by tabs: section.key, default (as a file spells it; "<...>" for a default
