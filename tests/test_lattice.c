@@ -2,7 +2,7 @@
  * has; liquid.shape = ellipse keeps the lattice points inside the inscribed ellipse (2D) or
  * ellipsoid (3D), and derived_compute counts exactly the particles lattice_fill places. */
 #include "core/derived.h"
-#include "scheme/solver.h"
+#include "boundary/lattice.h"
 
 #include <setjmp.h>
 #include <stdarg.h>

@@ -1,6 +1,6 @@
 /* lattice: the initial particles (sec. 2.1). */
+#include "boundary/lattice.h"
 #include "physics/eos.h"
-#include "scheme/solver.h"
 
 int lattice_fill(particles *p, const config *cfg, const derived *dv)
 {

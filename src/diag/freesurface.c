@@ -1,6 +1,6 @@
 /* freesurface: Marrone et al. 2010 and the band S_F. */
 #include "diag/freesurface.h"
-#include "scheme/pair.h"
+#include "core/pair.h"
 
 void freesurface_flat_sums(const kernel *k, double dr, int depth, mat *l, vec *s)
 {

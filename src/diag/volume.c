@@ -3,7 +3,7 @@
 #include "core/reduce.h"
 #include "diag/freesurface.h"
 #include "diag/raster.h"
-#include "scheme/pair.h"
+#include "core/pair.h"
 
 typedef enum { MEASURE_KERNEL, MEASURE_GAMMA, MEASURE_LAMBDA } measure;
 

@@ -5,7 +5,7 @@
 #include "physics/diffusion.h"
 #include "physics/shifting.h"
 #include "physics/viscosity.h"
-#include "scheme/pair.h"
+#include "core/pair.h"
 
 /* Sums of one particle over its neighbours: the geometry (Eqs. 10, 11, A.2) and the raw
  * sums of the renormalized gradients (theory §2). */

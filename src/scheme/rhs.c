@@ -5,7 +5,7 @@
 #include "physics/pressure.h"
 #include "physics/viscosity.h"
 #include "physics/volume_correction.h"
-#include "scheme/pair.h"
+#include "core/pair.h"
 
 /* One particle's sums. `les`, `ale` and `variable_mass` are compile-time constants at each
  * call below, so the loop is specialised once per loop, never tested per pair

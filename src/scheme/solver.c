@@ -1,5 +1,6 @@
 /* solver: set-up and the neighbour structures of a step. */
 #include "scheme/solver.h"
+#include "boundary/lattice.h"
 #include "diag/freesurface.h"
 #include "physics/eos.h"
 #include "physics/viscosity.h"

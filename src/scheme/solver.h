@@ -59,7 +59,6 @@ typedef struct {
 #define solver_g_eff      DIM_NAME(solver_g_eff)
 #define solver_update_eos DIM_NAME(solver_update_eos)
 #define solver_max_speed  DIM_NAME(solver_max_speed)
-#define lattice_fill      DIM_NAME(lattice_fill)
 
 /* Particles on a lattice filling the liquid box with the hydrostatic state (sec. 2.1).
  * Returns 0, or 2 with a message. */
@@ -80,10 +79,5 @@ vec solver_g_eff(const solver *s, double t);
 double solver_max_speed(solver *s);
 /* p and V = m/rho of the fluid from rho, m (the linear EOS). */
 void solver_update_eos(solver *s);
-
-/* Fills the fluid part of p: positions (i + 1/2) spacing in the liquid box (or in the ellipse
- * inscribed in it, liquid.shape), p = rho0 |g| (H - y), rho from the EOS, m = rho dr^n, ids
- * 0.. in lattice order. */
-int lattice_fill(particles *p, const config *cfg, const derived *dv);
 
 #endif

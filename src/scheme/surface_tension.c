@@ -5,7 +5,7 @@
 #include "diag/freesurface.h"
 #include "physics/moment.h"
 #include "physics/surface_tension.h"
-#include "scheme/pair.h"
+#include "core/pair.h"
 
 #include <stdlib.h>
 #include <string.h>

@@ -5,7 +5,7 @@
 #include "physics/shifting.h"
 #include "physics/volume_correction.h"
 #include "scheme/fields.h"
-#include "scheme/pair.h"
+#include "core/pair.h"
 
 #include <math.h>
 
