@@ -10,6 +10,7 @@
 
 #include "app/simulation.h"
 #include "core/derived.h"
+#include "scheme/case_numbers.h"
 
 #include "check.h"
 #include "table.h"
@@ -46,7 +47,7 @@ static void check_case(const char *path, config *cfg)
     motion mo;
     if (motion_init(&mo, cfg, err, sizeof err)) fail_msg("%s: %s", path, err);
     derived dv;
-    derived_compute(cfg, &mo, &dv);
+    case_numbers(cfg, &mo, &dv);
     motion_free(&mo);
     if (derived_check(cfg, &dv, err, sizeof err)) fail_msg("%s: %s", path, err);
 }

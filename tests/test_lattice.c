@@ -1,8 +1,9 @@
 /* The initial lattice (sec. 2.1): liquid.shape = box fills the liquid box exactly as it always
  * has; liquid.shape = ellipse keeps the lattice points inside the inscribed ellipse (2D) or
- * ellipsoid (3D), and derived_compute counts exactly the particles lattice_fill places. */
-#include "core/derived.h"
+ * ellipsoid (3D), and case_numbers counts exactly the particles lattice_fill places. */
 #include "boundary/lattice.h"
+#include "core/derived.h"
+#include "scheme/case_numbers.h"
 
 #include <setjmp.h>
 #include <stdarg.h>
@@ -39,13 +40,13 @@ static void load(config *cfg, const char *text, const char *const *set, int n_se
     if (config_load_string(cfg, text, "test", set, n_set, err, sizeof err)) fail_msg("%s", err);
 }
 
-/* derived_compute, then lattice_fill, which must place exactly dv->n_fluid particles. */
+/* case_numbers, then lattice_fill, which must place exactly dv->n_fluid particles. */
 static void fill(const config *cfg, derived *dv, particles *p)
 {
     char err[1024];
     motion mo;
     if (motion_init(&mo, cfg, err, sizeof err)) fail_msg("%s", err);
-    derived_compute(cfg, &mo, dv);
+    case_numbers(cfg, &mo, dv);
     motion_free(&mo);
     if (derived_check(cfg, dv, err, sizeof err)) fail_msg("%s", err);
     assert_int_equal(particles_init(p, 0), 0);

@@ -5,11 +5,12 @@
 #include "boundary/motion.h"
 #include "core/config.h"
 #include "core/derived.h"
-#include "core/estimate.h"
 #include "core/version.h"
 #include "io/checkpoint.h"
 #include "io/hdf5_errors.h"
 #include "io/snapshot_read.h"
+#include "scheme/case_numbers.h"
+#include "scheme/estimate.h"
 
 #include <omp.h>
 #include <stdio.h>
@@ -32,7 +33,7 @@ static int validate_case(const config *cfg, derived *dv)
         fprintf(stderr, "vcsph: %s\n", err);
         return RUN_BAD_INPUT;
     }
-    derived_compute(cfg, &mo, dv);
+    case_numbers(cfg, &mo, dv);
     motion_free(&mo);
     if (derived_check(cfg, dv, err, sizeof err)) {
         fprintf(stderr, "vcsph: %s\n", err);

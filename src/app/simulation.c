@@ -8,7 +8,7 @@
 #include "app/threads.h"
 #include "app/progress.h"
 #include "app/run_state.h"
-#include "core/estimate.h"
+#include "scheme/estimate.h"
 #include "core/log.h"
 #include "core/version.h"
 #include "diag/energy.h"
@@ -261,7 +261,7 @@ static void log_start(const run *r)
              "%d threads",
              vcsph_version(), cfg->name, DIM, config_scheme_name(cfg->scheme), dv->n_fluid, dv->dr,
              dv->c0, cfg->t_end, omp_get_max_threads());
-    /* the warnings and estimates of `vcsph check` (core/derived.c, core/estimate.c) */
+    /* the warnings and estimates of `vcsph check` (core/derived.c, scheme/estimate.c) */
     derived_warnings(cfg, dv, log_warning, NULL);
     run_estimate est;
     char memory[256], wall[256];

@@ -3,8 +3,10 @@
 #ifndef VCSPH_DERIVED_H
 #define VCSPH_DERIVED_H
 
-#include "boundary/motion.h"
 #include "core/config.h"
+
+#include <stdbool.h>
+#include <stdio.h>
 
 typedef struct {
     double dr, h;        /* spacing H/N and smoothing length */
@@ -41,7 +43,16 @@ typedef struct {
                                            motion.decay > 0, dE_P = M_L g 2A (UPM, Fig. 27) */
 } derived;
 
-void derived_compute(const config *cfg, const motion *mo, derived *out);
+/* What the numbers of a case take from the scheme and the tank's motion, which core does not
+ * know: scheme/case_numbers.c finds them (case_numbers). */
+typedef struct {
+    double k_c;          /* CFL number: numerics.cfl, or Table 1's for the scheme */
+    double g_max;        /* largest effective gravity of the motion up to t_end */
+    double u_tank_max;   /* largest tank speed up to t_end */
+    double excursion[3]; /* half the range of the tank's driven displacement per axis */
+} derived_inputs;
+
+void derived_compute(const config *cfg, const derived_inputs *in, derived *out);
 /* The initial lattice, one predicate for derived_compute (which counts n_fluid with it) and
  * lattice_fill (which places the particles with it), so that the two always agree. Point
  * (c0, c1, c2) of the liquid box lattice, 0 <= ck < n_axis[k] (c2 = 0 in 2D), sits at

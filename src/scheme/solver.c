@@ -4,6 +4,7 @@
 #include "diag/freesurface.h"
 #include "physics/eos.h"
 #include "physics/viscosity.h"
+#include "scheme/case_numbers.h"
 #include "scheme/models.h"
 #include "scheme/volume_correction.h"
 
@@ -67,7 +68,7 @@ int solver_init(solver *s, const config *cfg, char *err, size_t err_len)
     s->cfg = cfg;
     int status = motion_init(&s->mo, cfg, err, err_len);
     if (status) return status;
-    derived_compute(cfg, &s->mo, &s->dv);
+    case_numbers(cfg, &s->mo, &s->dv);
     if ((status = derived_check(cfg, &s->dv, err, err_len))) {
         motion_free(&s->mo);
         return status;

@@ -23,6 +23,7 @@
  * through its malloc. The input goes to a scratch file (HDF5 and the hash read a path). */
 #define FUZZ_TARGET "fuzz_checkpoint"
 #include "fuzz_target.h"
+#include "scheme/case_numbers.h"
 
 #include <errno.h>
 #include <stddef.h>
@@ -104,7 +105,7 @@ static int checkpoint_config(const checkpoint_data *cd, config *cfg)
     motion mo;
     if (motion_init(&mo, cfg, err, sizeof err)) return -1;
     derived dv;
-    derived_compute(cfg, &mo, &dv);
+    case_numbers(cfg, &mo, &dv);
     motion_free(&mo);
     return derived_check(cfg, &dv, err, sizeof err) || dv.n_fluid > MAX_PARTICLES ? -1 : 0;
 }

@@ -7,10 +7,11 @@
  * - a failed load says why (a message in err);
  * - what config_write writes, config_load reads back to the same struct, which writes the
  *   same text again;
- * and it computes and checks the derived numbers of every case that loads (derived_compute,
+ * and it computes and checks the derived numbers of every case that loads (case_numbers,
  * derived_check and derived_print, as `vcsph check` does), without running the solver. */
 #define FUZZ_TARGET "fuzz_config"
 #include "fuzz_target.h"
+#include "scheme/case_numbers.h"
 
 #include <stddef.h>
 #include <stdint.h>
@@ -68,7 +69,7 @@ static void check_derived(const config *loaded)
     if (motion_init(&mo, &cfg, err, sizeof err) != 0)
         broken("motion_init failed without a table", err);
     derived dv;
-    derived_compute(&cfg, &mo, &dv);
+    case_numbers(&cfg, &mo, &dv);
     motion_free(&mo);
     err[0] = '\0';
     int rc = derived_check(&cfg, &dv, err, sizeof err);

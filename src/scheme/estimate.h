@@ -1,6 +1,6 @@
 /* estimate: the memory and wall time a case will take, printed by `vcsph check` and at the
  * start of `vcsph run` (docs/checks.md). Dimension-free declarations of the 2D and 3D builds
- * (core/estimate.c is compiled for each); estimate_run dispatches on case.dim. */
+ * (scheme/estimate.c is compiled for each); estimate_run dispatches on case.dim. */
 #ifndef VCSPH_ESTIMATE_H
 #define VCSPH_ESTIMATE_H
 

@@ -1,6 +1,6 @@
 /* estimate: memory and wall time of a case before it runs (docs/checks.md). Compiled for
  * DIM = 2 and 3: the particle store's bytes per slot and the RK4 work arrays depend on DIM. */
-#include "core/estimate.h"
+#include "scheme/estimate.h"
 #include "core/particles.h"
 #include "scheme/solver.h"
 
