@@ -39,7 +39,6 @@
 #include "app/output_folder.h"
 #include "app/run_state.h"
 #include "core/log.h"
-#include "diag/health.h"
 
 #include <errno.h>
 #include <math.h>
@@ -379,7 +378,7 @@ static int check_state(const run *r, char *err, size_t err_len)
         why = "an eta outside [0, 1] or a negative count of the eta control";
     else if (!ids_are_a_permutation(&s->p))
         why = "particle ids that are not 0 .. n-1";
-    else if (health_check(s, health, sizeof health)) {
+    else if (solver_health(s, health, sizeof health)) {
         snprintf(failed, sizeof failed, "particles that fail the health check (%s)", health);
         why = failed;
     }

@@ -103,7 +103,7 @@ void run_write_series_row(run *r, int with_geometry)
     volume_errors ve;
     if (with_geometry) volume_compute(&s->p, s->dv.cell_volume, s->scratch, &ve);
     diagnostics dg;
-    diagnostics_compute(s, &dg);
+    solver_diagnostics(s, &dg);
     double esurf = surface_energy(s), energy = mechanical_energy(&dg);
     if (s->step == 0) {
         r->energy0 = energy;
@@ -394,7 +394,7 @@ void run_write_dissipation_row(run *r)
 {
     double period = r->cfg->period;
     diagnostics dg;
-    diagnostics_compute(&r->s, &dg);
+    solver_diagnostics(&r->s, &dg);
     double ediss = dissipated_energy(r, mechanical_energy(&dg));
     double loss = surface_loss(r, surface_energy(&r->s));
     double e = ediss - r->ediss_period_start, norm = r->s.dv.dissipation_norm;

@@ -12,7 +12,6 @@
 #include "core/log.h"
 #include "core/version.h"
 #include "diag/energy.h"
-#include "diag/health.h"
 #include "io/csv.h"
 #include "scheme/solver.h"
 
@@ -109,7 +108,7 @@ static int outputs_due(run *r, int last)
 static int breakdown(run *r)
 {
     char msg[512];
-    if (!health_check(&r->s, msg, sizeof msg)) return 0;
+    if (!solver_health(&r->s, msg, sizeof msg)) return 0;
     progress_clear(&r->pr);
     log_error("vcsph: %s", msg);
     run_event(r, "breakdown", msg);
@@ -242,7 +241,7 @@ static void start_fresh(run *r)
     r->v0 = r->s.dv.v0;
     solver_update_eos(&r->s);
     diagnostics dg;
-    diagnostics_compute(&r->s, &dg);
+    solver_diagnostics(&r->s, &dg);
     r->mass0 = dg.mass;
     r->period = 1;
 }

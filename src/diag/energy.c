@@ -27,13 +27,13 @@ static inline double angular_momentum(const particles *p, const double centre[3]
 
 /* One particle's share of a global sum; `axis` for the first moments m x_d and the
  * components of the angular momentum about `centre`. */
-static inline double term_value(const solver *s, term t, int axis, const double centre[3], size_t i)
+static inline double term_value(const particles *p, const energy_params *ep, term t, int axis,
+                                const double centre[3], size_t i)
 {
-    const particles *p = &s->p;
     switch (t) {
     case TERM_EKIN: return 0.5 * p->m[i] * vec_norm2(vec_load(p->u, i));
-    case TERM_EPOT: return p->m[i] * s->cfg->gravity * p->x[1][i];
-    case TERM_EINT: return p->m[i] * eos_internal_energy(p->rho[i], s->pp.rho0, s->pp.c0);
+    case TERM_EPOT: return p->m[i] * ep->gravity * p->x[1][i];
+    case TERM_EINT: return p->m[i] * eos_internal_energy(p->rho[i], ep->rho0, ep->c0);
     case TERM_MASS: return p->m[i];
     case TERM_VOLUME: return p->m[i] / p->rho[i];
     case TERM_MOMENT: return p->m[i] * p->x[axis][i];
@@ -43,30 +43,39 @@ static inline double term_value(const solver *s, term t, int axis, const double 
 }
 
 /* The terms go to scratch, then one sum in the fixed order of the reduce module. */
-static double sum_term(solver *s, term t, int axis, const double centre[3])
+static double sum_term(const particles *p, const energy_params *ep, double *scratch, term t,
+                       int axis, const double centre[3])
 {
 #pragma omp parallel for schedule(static)
-    for (size_t i = 0; i < s->p.n_fluid; i++) s->scratch[i] = term_value(s, t, axis, centre, i);
-    return reduce_sum(s->scratch, s->p.n_fluid);
+    for (size_t i = 0; i < p->n_fluid; i++) scratch[i] = term_value(p, ep, t, axis, centre, i);
+    return reduce_sum(scratch, p->n_fluid);
 }
 
-void diagnostics_compute(solver *s, diagnostics *out)
+double fluid_max_speed(const particles *p, double *scratch)
 {
-    const particles *p = &s->p;
+#pragma omp parallel for schedule(static)
+    for (size_t i = 0; i < p->n_fluid; i++) scratch[i] = vec_norm(vec_load(p->u, i));
+    return reduce_max(scratch, p->n_fluid);
+}
+
+void diagnostics_compute(const particles *p, const energy_params *ep, double *scratch,
+                         diagnostics *out)
+{
     size_t n = p->n_fluid;
-    out->ekin = sum_term(s, TERM_EKIN, 0, NULL);
-    out->epot = sum_term(s, TERM_EPOT, 0, NULL);
-    out->eint = sum_term(s, TERM_EINT, 0, NULL);
-    out->mass = sum_term(s, TERM_MASS, 0, NULL);
-    out->vol_sph = sum_term(s, TERM_VOLUME, 0, NULL);
+    out->ekin = sum_term(p, ep, scratch, TERM_EKIN, 0, NULL);
+    out->epot = sum_term(p, ep, scratch, TERM_EPOT, 0, NULL);
+    out->eint = sum_term(p, ep, scratch, TERM_EINT, 0, NULL);
+    out->mass = sum_term(p, ep, scratch, TERM_MASS, 0, NULL);
+    out->vol_sph = sum_term(p, ep, scratch, TERM_VOLUME, 0, NULL);
     for (int d = 0; d < 3; d++)
-        out->com[d] = d < DIM ? sum_term(s, TERM_MOMENT, d, NULL) / out->mass : 0.0;
+        out->com[d] = d < DIM ? sum_term(p, ep, scratch, TERM_MOMENT, d, NULL) / out->mass : 0.0;
     for (int a = 0; a < 3; a++) /* 2D: about z alone */
-        out->angmom[a] = DIM == 3 || a == 2 ? sum_term(s, TERM_ANGULAR, a, out->com) : 0.0;
+        out->angmom[a] =
+            DIM == 3 || a == 2 ? sum_term(p, ep, scratch, TERM_ANGULAR, a, out->com) : 0.0;
     out->xmin = reduce_min(p->x[0], n);
     out->xmax = reduce_max(p->x[0], n);
     out->ymax = reduce_max(p->x[1], n);
     out->rho_min = reduce_min(p->rho, n);
     out->rho_max = reduce_max(p->rho, n);
-    out->umax = solver_max_speed(s);
+    out->umax = fluid_max_speed(p, scratch);
 }

@@ -3,7 +3,7 @@
 #ifndef VCSPH_ENERGY_H
 #define VCSPH_ENERGY_H
 
-#include "scheme/solver.h"
+#include "core/particles.h"
 
 typedef struct {
     double ekin, epot, eint; /* J (per unit width in 2D) */
@@ -14,9 +14,19 @@ typedef struct {
     double umax, rho_min, rho_max;
 } diagnostics;
 
-#define diagnostics_compute DIM_NAME(diagnostics_compute)
+/* What the energy terms need beyond the particles. */
+typedef struct {
+    double gravity;  /* |g| along -y, for the potential energy */
+    double rho0, c0; /* the EOS, for the internal energy */
+} energy_params;
 
-/* Every sum in a fixed order (reduce module). */
-void diagnostics_compute(solver *s, diagnostics *out);
+#define diagnostics_compute DIM_NAME(diagnostics_compute)
+#define fluid_max_speed     DIM_NAME(fluid_max_speed)
+
+/* Every sum in a fixed order (reduce module); scratch holds n_fluid doubles. */
+void diagnostics_compute(const particles *p, const energy_params *ep, double *scratch,
+                         diagnostics *out);
+/* Largest |u| of the fluid (through scratch, n_fluid doubles). */
+double fluid_max_speed(const particles *p, double *scratch);
 
 #endif

@@ -23,21 +23,13 @@ static double time_step(const solver *s)
     return dt;
 }
 
-double solver_max_speed(solver *s)
-{
-    particles *p = &s->p;
-#pragma omp parallel for schedule(static)
-    for (size_t i = 0; i < p->n_fluid; i++) s->scratch[i] = vec_norm(vec_load(p->u, i));
-    return reduce_max(s->scratch, p->n_fluid);
-}
-
 /* Sorts the fluid by cell, makes the ghosts and lists the neighbours within 2h + skin, where
  * the skin covers the relative motion of two particles during the step: pairs beyond 2h add
  * exactly zero, so the results do not depend on the skin as long as it is wide enough. */
 static int build_neighbours(solver *s, double dt)
 {
     particles *p = &s->p;
-    double bound = dt * (solver_max_speed(s) + dt * s->max_acc);
+    double bound = dt * (fluid_max_speed(&s->p, s->scratch) + dt * s->max_acc);
     s->skin = 3.0 * bound > 0.05 * s->dv.dr ? 3.0 * bound : 0.05 * s->dv.dr;
     double cutoff = 2.0 * s->dv.h + s->skin;
     double lo[DIM], hi[DIM];

@@ -2,6 +2,7 @@
 #include "scheme/solver.h"
 #include "boundary/lattice.h"
 #include "diag/freesurface.h"
+#include "diag/health.h"
 #include "physics/eos.h"
 #include "physics/viscosity.h"
 #include "scheme/case_numbers.h"
@@ -130,4 +131,16 @@ void solver_update_eos(solver *s)
         p->vol[i] = p->m[i] / p->rho[i];
         for (int d = 0; d < DIM; d++) p->u_wall[d][i] = p->u[d][i];
     }
+}
+
+void solver_diagnostics(solver *s, diagnostics *out)
+{
+    energy_params ep = {s->cfg->gravity, s->pp.rho0, s->pp.c0};
+    diagnostics_compute(&s->p, &ep, s->scratch, out);
+}
+
+int solver_health(const solver *s, char *msg, size_t msg_len)
+{
+    health_limits lim = {&s->tank, s->pp.rho0, s->cfg->density_bound};
+    return health_check(&s->p, &lim, s->t, s->step, msg, msg_len);
 }

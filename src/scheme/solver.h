@@ -9,6 +9,7 @@
 #include "core/config.h"
 #include "core/derived.h"
 #include "core/particles.h"
+#include "diag/energy.h"
 #include "scheme/eta_control.h"
 #include "scheme/physics_params.h"
 #include "scheme/rhs.h"
@@ -51,14 +52,15 @@ typedef struct {
     char eta_switch_detail[160];  /* ... and how */
 } solver;
 
-#define solver_init       DIM_NAME(solver_init)
-#define solver_free       DIM_NAME(solver_free)
-#define solver_step       DIM_NAME(solver_step)
-#define solver_prepare    DIM_NAME(solver_prepare)
-#define solver_advance    DIM_NAME(solver_advance)
-#define solver_g_eff      DIM_NAME(solver_g_eff)
-#define solver_update_eos DIM_NAME(solver_update_eos)
-#define solver_max_speed  DIM_NAME(solver_max_speed)
+#define solver_init        DIM_NAME(solver_init)
+#define solver_free        DIM_NAME(solver_free)
+#define solver_step        DIM_NAME(solver_step)
+#define solver_prepare     DIM_NAME(solver_prepare)
+#define solver_advance     DIM_NAME(solver_advance)
+#define solver_g_eff       DIM_NAME(solver_g_eff)
+#define solver_update_eos  DIM_NAME(solver_update_eos)
+#define solver_diagnostics DIM_NAME(solver_diagnostics)
+#define solver_health      DIM_NAME(solver_health)
 
 /* Particles on a lattice filling the liquid box with the hydrostatic state (sec. 2.1).
  * Returns 0, or 2 with a message. */
@@ -75,8 +77,10 @@ void solver_advance(solver *s, double t_stop);
 int solver_step(solver *s, double t_stop);
 /* g_eff = g - a_tank(t) (theory §6) */
 vec solver_g_eff(const solver *s, double t);
-/* Largest |u| of the fluid (uses s->scratch). */
-double solver_max_speed(solver *s);
+/* The global sums of the time series for the state at s->t (diag/energy.h; uses s->scratch). */
+void solver_diagnostics(solver *s, diagnostics *out);
+/* health_check of the state at s->t within the tank and numerics.density_bound. */
+int solver_health(const solver *s, char *msg, size_t msg_len);
 /* p and V = m/rho of the fluid from rho, m (the linear EOS). */
 void solver_update_eos(solver *s);
 
