@@ -36,9 +36,7 @@
  *   x_0 .. x_{DIM-1}  f64    n_fluid, positions
  *   u_0 .. u_{DIM-1}  f64    n_fluid, velocities
  *   rho, m            f64    n_fluid */
-#include "app/output_folder.h"
 #include "app/run_state.h"
-#include "core/log.h"
 
 #include <errno.h>
 #include <math.h>
@@ -428,42 +426,4 @@ int restart_check_outputs(run *r, char *err, size_t err_len)
         }
     }
     return 0;
-}
-
-/* The rows of timeseries.csv after `size` bytes (the checkpoint's) whose time is past t, and
- * the time of the last; 0 if there are none or the file cannot be read. */
-static long rows_after(const char *path, long long size, double t, double *t_last)
-{
-    FILE *f = fopen(path, "r");
-    if (!f) return 0;
-    long rows = 0;
-    char line[8192];
-    if (fseeko(f, (off_t)size, SEEK_SET) == 0)
-        while (fgets(line, sizeof line, f)) {
-            double time = strtod(line, NULL);
-            if (!strchr(line, '\n') || !(time > t)) continue;
-            rows++;
-            *t_last = time;
-        }
-    fclose(f);
-    return rows;
-}
-
-void restart_report_rewind(run *r)
-{
-    if (r->resume_sizes[RUN_CSV_TIMESERIES] < 0) return;
-    char path[CONFIG_PATH_MAX + 64];
-    snprintf(path, sizeof path, "%s/%s", r->opt->output_dir, run_csv_name(RUN_CSV_TIMESERIES));
-    double t_last = r->s.t;
-    long rows = rows_after(path, r->resume_sizes[RUN_CSV_TIMESERIES], r->s.t, &t_last);
-    if (rows == 0) return; /* a finished run, or one stopped by a signal: nothing is lost */
-    log_info("vcsph: the run had gone on after its checkpoint: rewinding to t = %.9g s removes "
-             "%ld rows of timeseries.csv up to t = %.9g s, and the other rows, snapshots and "
-             "images after the checkpoint; the restart computes them again",
-             r->s.t, rows, t_last);
-}
-
-void restart_rewind_outputs(run *r)
-{
-    output_folder_rewind(r->opt->output_dir, r->n_snapshots, r->n_images);
 }

@@ -263,7 +263,7 @@ int run_write_snapshot(run *r)
 }
 
 /* A restarted run's snapshots.xmf lists the snapshots of the checkpoint, not those written
- * after it (which restart_rewind_outputs removed); none: no index, as in a fresh run. */
+ * after it (which open_files removed); none: no index, as in a fresh run. */
 static int rewind_xdmf(run *r)
 {
     if (r->n_snapshots > 0) {
@@ -349,13 +349,50 @@ static int open_probes(run *r)
     return open_csv(r, RUN_CSV_PROBES, header);
 }
 
+/* ---- a restart's rewind ---------------------------------------------------------------------- */
+
+/* The rows of timeseries.csv after `size` bytes (the checkpoint's) whose time is past t, and
+ * the time of the last; 0 if there are none or the file cannot be read. */
+static long rows_after(const char *path, long long size, double t, double *t_last)
+{
+    FILE *f = fopen(path, "r");
+    if (!f) return 0;
+    long rows = 0;
+    char line[8192];
+    if (fseeko(f, (off_t)size, SEEK_SET) == 0)
+        while (fgets(line, sizeof line, f)) {
+            double time = strtod(line, NULL);
+            if (!strchr(line, '\n') || !(time > t)) continue;
+            rows++;
+            *t_last = time;
+        }
+    fclose(f);
+    return rows;
+}
+
+/* Says on the terminal and in log.txt when the rewind drops rows after the checkpoint's time
+ * (a run killed after its last checkpoint), before the files are cut back. */
+static void report_rewind(const run *r)
+{
+    if (r->resume_sizes[RUN_CSV_TIMESERIES] < 0) return;
+    char path[CONFIG_PATH_MAX + 64];
+    snprintf(path, sizeof path, "%s/%s", r->opt->output_dir, run_csv_name(RUN_CSV_TIMESERIES));
+    double t_last = r->s.t;
+    long rows = rows_after(path, r->resume_sizes[RUN_CSV_TIMESERIES], r->s.t, &t_last);
+    if (rows == 0) return; /* a finished run, or one stopped by a signal: nothing is lost */
+    log_info("vcsph: the run had gone on after its checkpoint: rewinding to t = %.9g s removes "
+             "%ld rows of timeseries.csv up to t = %.9g s, and the other rows, snapshots and "
+             "images after the checkpoint; the restart computes them again",
+             r->s.t, rows, t_last);
+}
+
 /* A fresh run starts the files; a restarted one rewinds them to the checkpoint. */
 static int open_files(run *r)
 {
     char path[CONFIG_PATH_MAX + 64];
     run_out_path(r, path, sizeof path, "log.txt");
     if (log_open(path, r->resumed)) return -1;
-    if (r->resumed) restart_report_rewind(r);
+    if (r->resumed) report_rewind(r);
     run_out_path(r, path, sizeof path, "case.ini");
     FILE *f = fopen(path, "w");
     if (!f || fputs(r->case_text, f) == EOF || fclose(f)) return -1;
@@ -366,7 +403,9 @@ static int open_files(run *r)
     if (run_has_probes(r->cfg) && open_probes(r)) return -1;
     if (open_csv(r, RUN_CSV_EVENTS, "t,event,detail")) return -1;
     if (r->resumed) {
-        restart_rewind_outputs(r);
+        /* snapshots and images numbered from the checkpoint's counts on, a half-written
+           checkpoint.h5.tmp */
+        output_folder_rewind(r->opt->output_dir, r->n_snapshots, r->n_images);
         return rewind_xdmf(r);
     }
     return 0; /* a fresh run starts in a folder without another run's files (simulation.c) */

@@ -118,12 +118,10 @@ int run_write_snapshot(run *r);
 /* images/particles_NNNNNN.png of the current state. Returns 0 or -1. */
 int run_write_image(run *r);
 
-#define run_reserve_snapshots  DIM_NAME(run_reserve_snapshots)
-#define restart_save           DIM_NAME(restart_save)
-#define restart_load           DIM_NAME(restart_load)
-#define restart_check_outputs  DIM_NAME(restart_check_outputs)
-#define restart_rewind_outputs DIM_NAME(restart_rewind_outputs)
-#define restart_report_rewind  DIM_NAME(restart_report_rewind)
+#define run_reserve_snapshots DIM_NAME(run_reserve_snapshots)
+#define restart_save          DIM_NAME(restart_save)
+#define restart_load          DIM_NAME(restart_load)
+#define restart_check_outputs DIM_NAME(restart_check_outputs)
 
 /* Room for n snapshots in the XDMF index. Returns 0 or -1. */
 int run_reserve_snapshots(run *r, int n);
@@ -141,12 +139,5 @@ int restart_load(run *r, const checkpoint_data *cd, char *err, size_t err_len);
 /* Checks, touching nothing, that every CSV file the checkpoint recorded exists in the output
  * directory and is at least as long as it was then. Returns 0, or -1 with a message. */
 int restart_check_outputs(run *r, char *err, size_t err_len);
-
-/* Removes what the run wrote after the checkpoint besides CSV rows: snapshots and images
- * numbered from the checkpoint's counts on, and a half-written checkpoint.h5.tmp. */
-void restart_rewind_outputs(run *r);
-/* Says on the terminal and in log.txt when the rewind drops rows after the checkpoint's time
- * (a run killed after its last checkpoint), before the files are cut back. */
-void restart_report_rewind(run *r);
 
 #endif
