@@ -72,10 +72,11 @@ static void test_mirrored_state(void **state)
     add(&p, (double[3]){0.05, 0.03, 0.58});
     add(&p, (double[3]){0.96, 0.75, 0.02});
     assert_int_equal(tank_make_ghosts(&t, &p, reach), 0);
-    vec g_eff = vec_zero();
-    g_eff.c[0] = 0.5;
-    g_eff.c[1] = -9.81;
-    tank_refresh_ghosts(&t, &p, g_eff, rho0, c0);
+    /* a tank accelerating at -0.5 m/s^2 along x: the body force g - a0 = (0.5, -9.81) */
+    tank_frame frame = {.gravity = {0.0, -9.81, 0.0}, .origin_acc = {-0.5, 0.0, 0.0}};
+    vec g_eff = frame_body_force(&frame, vec_zero(), vec_zero());
+    assert_true(g_eff.c[0] == 0.5 && g_eff.c[1] == -9.81);
+    tank_refresh_ghosts(&t, &p, &frame, rho0, c0);
     for (size_t i = 0; i < p.n_fluid; i++) {
         vec grad = vec_zero();
         grad.c[1] = 3.0 + (double)i;
@@ -83,7 +84,7 @@ static void test_mirrored_state(void **state)
         p.nu_t[i] = 1e-5 * (double)(i + 1);
         p.nu_delta[i] = 2e-5 * (double)(i + 1);
     }
-    tank_mirror_step_fields(&p, g_eff, c0);
+    tank_mirror_step_fields(&p, &frame, c0);
     for (size_t g = p.n_fluid; g < p.n_total; g++) {
         size_t i = (size_t)p.ghost_source[g - p.n_fluid];
         unsigned walls = p.ghost_walls[g - p.n_fluid];

@@ -64,6 +64,13 @@ void motion_acceleration(const motion *mo, double t, double a[3])
     harmonic(mo, t, &pos, &vel, &a[mo->kind == MOTION_SWAY ? 0 : 1]);
 }
 
+tank_frame motion_frame(const motion *mo, double gravity, double t)
+{
+    tank_frame f = {.gravity = {0.0, -gravity, 0.0}, .rotating = false};
+    motion_acceleration(mo, t, f.origin_acc);
+    return f;
+}
+
 /* Displacement and velocity without the `duration` cut; a table's ends hold still. */
 static void state_at(const motion *mo, double t, double x[3], double v[3])
 {

@@ -3,7 +3,9 @@
 #ifndef VCSPH_MOTION_H
 #define VCSPH_MOTION_H
 
+#include "boundary/frame.h"
 #include "core/config.h"
+
 #include <stddef.h>
 
 typedef struct {
@@ -19,6 +21,9 @@ int motion_init(motion *mo, const config *cfg, char *err, size_t err_len);
 void motion_free(motion *mo);
 /* Tank acceleration (m/s^2) at time t along x, y, z of the tank frame. */
 void motion_acceleration(const motion *mo, double t, double a[3]);
+/* The tank frame at time t (frame.h): gravity (0, -gravity, 0) in the tank's axes, the
+ * acceleration of motion_acceleration, no rotation (sway, heave and tables translate). */
+tank_frame motion_frame(const motion *mo, double gravity, double t);
 /* Tank displacement (m) at time t; after `duration`, uniform motion at the velocity reached
  * then. A table's natural spline has zero acceleration at its first and last rows. */
 void motion_position(const motion *mo, double t, double x[3]);

@@ -46,7 +46,8 @@ int tank_make_ghosts(const tank *t, particles *p, double reach)
     return 0;
 }
 
-void tank_refresh_ghosts(const tank *t, particles *p, vec g_eff, double rho0, double c0)
+void tank_refresh_ghosts(const tank *t, particles *p, const tank_frame *frame, double rho0,
+                         double c0)
 {
     size_t n_fluid = p->n_fluid;
     int no_slip = t->wall == WALL_NO_SLIP;
@@ -60,7 +61,9 @@ void tank_refresh_ghosts(const tank *t, particles *p, vec g_eff, double rho0, do
         vec_store(p->x, g, xg);
         vec_store(p->u, g, ug);
         vec_store(p->u_wall, g, no_slip ? vec_scale(ui, -1.0) : ug);
-        double pg = p->p[i] + p->rho[i] * vec_dot(g_eff, vec_sub(xg, xi));
+        /* the hydrostatic continuation under the source's body force */
+        vec force = frame_body_force(frame, xi, ui);
+        double pg = p->p[i] + p->rho[i] * vec_dot(force, vec_sub(xg, xi));
         p->p[g] = pg;
         p->rho[g] = eos_density(pg, rho0, c0);
         p->m[g] = p->m[i];
@@ -68,14 +71,15 @@ void tank_refresh_ghosts(const tank *t, particles *p, vec g_eff, double rho0, do
     }
 }
 
-void tank_mirror_step_fields(particles *p, vec g_eff, double c0)
+void tank_mirror_step_fields(particles *p, const tank_frame *frame, double c0)
 {
     size_t n_fluid = p->n_fluid;
 #pragma omp parallel for schedule(static)
     for (size_t g = n_fluid; g < p->n_total; g++) {
         size_t i = (size_t)p->ghost_source[g - n_fluid];
         unsigned walls = p->ghost_walls[g - n_fluid];
-        vec grad_hydro = vec_scale(g_eff, p->rho[i] / (c0 * c0));
+        vec force = frame_body_force(frame, vec_load(p->x, i), vec_load(p->u, i));
+        vec grad_hydro = vec_scale(force, p->rho[i] / (c0 * c0));
         vec dynamic = vec_sub(vec_load(p->grad_rho, i), grad_hydro);
         vec_store(p->grad_rho, g, vec_add(tank_mirror_vector(dynamic, walls), grad_hydro));
         p->nu_t[g] = p->nu_t[i];

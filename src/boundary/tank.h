@@ -3,6 +3,7 @@
 #ifndef VCSPH_TANK_H
 #define VCSPH_TANK_H
 
+#include "boundary/frame.h"
 #include "core/config.h"
 #include "core/particles.h"
 #include "core/vec.h"
@@ -27,14 +28,16 @@ int tank_make_ghosts(const tank *t, particles *p, double reach);
 /* Ghost state from the current fluid state (every RK stage): mirrored position; velocity
  * with the normal components reversed (free slip) and, for the viscous term, reversed
  * whole (no slip); mass of the source; pressure continued hydrostatically,
- * p_g = p_i + rho_i g_eff . (r_g - r_i), and density from the EOS. Needs fluid p. */
-void tank_refresh_ghosts(const tank *t, particles *p, vec g_eff, double rho0, double c0);
+ * p_g = p_i + rho_i f_i . (r_g - r_i) with f_i the body force of the tank frame at
+ * the source (frame.h; g - a_tank today), and density from the EOS. Needs fluid p. */
+void tank_refresh_ghosts(const tank *t, particles *p, const tank_frame *frame, double rho0,
+                         double c0);
 
 /* Per-step fields of the ghosts from their sources: eddy viscosity, diffusion coefficient and
  * S_F flag copied; shifting and volume-correction velocities mirrored (free slip); density gradient
- * = mirror of the source's dynamic part plus the hydrostatic gradient rho g_eff / c0^2, consistent
+ * = mirror of the source's dynamic part plus the hydrostatic gradient rho f_i / c0^2, consistent
  * with the hydrostatic continuation above. */
-void tank_mirror_step_fields(particles *p, vec g_eff, double c0);
+void tank_mirror_step_fields(particles *p, const tank_frame *frame, double c0);
 
 /* A per-particle scalar of the fluid copied to its ghosts (a field that is even across the
  * walls: the ghost carries its source's value). */

@@ -153,9 +153,9 @@ void fields_geometry(const physics_params *pp, const tank *t, particles *p,
 }
 
 void fields_frozen_terms(const physics_params *pp, particles *p, const neighbour_list *nl,
-                         vec g_eff, bool variable_mass, double dt)
+                         const tank_frame *frame, bool variable_mass, double dt)
 {
-    tank_mirror_step_fields(p, g_eff, pp->c0);
+    tank_mirror_step_fields(p, frame, pp->c0);
     if (pp->c_delta > 0.0) {
         if (variable_mass)
             diffusion(pp, p, nl, true, dt);

@@ -30,8 +30,9 @@ void fields_shifting(const physics_params *pp, particles *p, const neighbour_lis
 /* The other terms frozen over the RK stages, after the shifting velocity and bounce-back:
  * the ghosts' copies of the per-step fields, D^rho and, with variable masses, D^m of
  * Eq. (5). dt, the step they are frozen over, bounds each particle's D^rho so that the step
- * is stable (diffusion.h). */
+ * is stable (diffusion.h). `frame`: the tank frame at the step's start, whose body force
+ * the ghosts' hydrostatic density gradient follows. */
 void fields_frozen_terms(const physics_params *pp, particles *p, const neighbour_list *nl,
-                         vec g_eff, bool variable_mass, double dt);
+                         const tank_frame *frame, bool variable_mass, double dt);
 
 #endif

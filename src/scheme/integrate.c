@@ -45,7 +45,8 @@ static int build_neighbours(solver *s, double dt)
     particles_permute_fluid(p, s->order, s->scratch);
     if (tank_make_ghosts(&s->tank, p, cutoff)) return -1;
     solver_update_eos(s);
-    tank_refresh_ghosts(&s->tank, p, solver_g_eff(s, s->t), s->pp.rho0, s->pp.c0);
+    tank_frame frame = solver_frame(s, s->t);
+    tank_refresh_ghosts(&s->tank, p, &frame, s->pp.rho0, s->pp.c0);
     if (cells_bin(&s->grid, p->x, p->n_total)) return -1;
     return neighbours_build(&s->nl, &s->grid, p->x, p->n_fluid, cutoff);
 }
@@ -109,7 +110,7 @@ int solver_prepare(solver *s, double t_stop)
     if (s->t + dt > t_stop) dt = t_stop - s->t;
     s->dt = dt;
     if (build_neighbours(s, dt)) return -1;
-    vec g_eff = solver_g_eff(s, s->t);
+    tank_frame frame = solver_frame(s, s->t);
     fields_geometry(&s->pp, &s->tank, &s->p, &s->nl);
     s->eta_switched = 0;
     if (s->cfg->scheme == SCHEME_DELTA_PLUS_ALE) {
@@ -121,12 +122,12 @@ int solver_prepare(solver *s, double t_stop)
     }
     control_edbc(s);
     if (s->n_edbc > 0) /* the ghosts of corrected particles carry the corrected state */
-        tank_refresh_ghosts(&s->tank, &s->p, g_eff, s->pp.rho0, s->pp.c0);
+        tank_refresh_ghosts(&s->tank, &s->p, &frame, s->pp.rho0, s->pp.c0);
     if (s->pp.shifting) fields_shifting(&s->pp, &s->p, &s->nl);
     if (s->pp.volume_correction) volume_correction_apply(&s->pp, &s->p, &s->nl);
     if (tank_bounce_back(&s->tank, &s->p, s->dv.dr, dt) > 0) /* ghosts of reversed velocities */
-        tank_refresh_ghosts(&s->tank, &s->p, g_eff, s->pp.rho0, s->pp.c0);
-    fields_frozen_terms(&s->pp, &s->p, &s->nl, g_eff, s->eta_control.eta > 0.0, s->dt);
+        tank_refresh_ghosts(&s->tank, &s->p, &frame, s->pp.rho0, s->pp.c0);
+    fields_frozen_terms(&s->pp, &s->p, &s->nl, &frame, s->eta_control.eta > 0.0, s->dt);
     if (s->pp.surface_tension) { /* the force of stage 0, and room for the other stages' */
         if (surface_tension_reserve(&s->st_work, s->p.n_total)) return -1;
         surface_tension_find_bodies(&s->pp.k, &s->p, &s->nl, &s->st_work);
@@ -148,17 +149,17 @@ void solver_advance(solver *s, double t_stop)
     double work = 0.0, work_st = 0.0;
     for (int stage = 0; stage < 4; stage++) {
         double ts = s->t + stage_c[stage] * dt, c = stage_c[stage] * dt;
-        vec g_eff = solver_g_eff(s, ts);
+        tank_frame frame = solver_frame(s, ts);
         if (stage > 0) { /* stage 0 is the state solver_prepare has set up */
 #pragma omp parallel for schedule(static)
             for (size_t i = 0; i < n; i++)
                 for (int v = 0; v < RK_VARS; v++) y[v][i] = s->y0[v][i] + c * rate[v][i];
             solver_update_eos(s);
-            tank_refresh_ghosts(&s->tank, p, g_eff, s->pp.rho0, s->pp.c0);
+            tank_refresh_ghosts(&s->tank, p, &frame, s->pp.rho0, s->pp.c0);
             if (s->pp.surface_tension) /* from the stage's positions (surface_tension.h) */
                 surface_tension_compute(&s->st, &s->pp.k, p, &s->nl, &s->st_work);
         }
-        rhs_compute(&s->pp, p, &s->nl, g_eff, s->eta_control.eta, &s->k);
+        rhs_compute(&s->pp, p, &s->nl, &frame, s->eta_control.eta, &s->k);
         if (stage == 0) s->max_acc = max_acceleration(s);
         work += stage_w[stage] * input_power(s, ts);
         if (s->pp.surface_tension) work_st += stage_w[stage] * surface_tension_power(p, s->scratch);

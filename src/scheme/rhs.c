@@ -13,9 +13,9 @@
  * continuity equation gains -rho_i du_ji . grad W V_j and the flux div(rho du), the momentum
  * equation rho (du . grad) u, and with variable masses dm/dt = eta [div(rho du) V_i + D^m]. */
 static inline void rhs_particle(const physics_params *pp, const particles *p,
-                                const neighbour_list *nl, size_t i, vec g_eff, const bool les,
-                                const bool ale, const bool variable_mass, double eta,
-                                const rates *out)
+                                const neighbour_list *nl, size_t i, const tank_frame *frame,
+                                const bool les, const bool ale, const bool variable_mass,
+                                double eta, const rates *out)
 {
     const kernel *k = &pp->k;
     vec xi = vec_load(p->x, i), ui = vec_load(p->u, i), uwi = vec_load(p->u_wall, i);
@@ -54,7 +54,7 @@ static inline void rhs_particle(const physics_params *pp, const particles *p,
         drho += volume_correction_resampling(dvi, vec_load(p->grad_rho, i));
     }
     out->drho[i] = drho + p->diff_rho[i];
-    vec acc = vec_axpy(g_eff, 1.0 / rhoi, force);
+    vec acc = vec_axpy(frame_body_force(frame, xi, ui), 1.0 / rhoi, force);
     /* the surface-tension force on the particle at this stage: m a sums it exactly */
     if (pp->surface_tension) acc = vec_axpy(acc, 1.0 / p->m[i], vec_load(p->st_force, i));
     for (int d = 0; d < DIM; d++) {
@@ -67,10 +67,10 @@ static inline void rhs_particle(const physics_params *pp, const particles *p,
 
 #define RHS_LOOP(les, ale, mass)                                                                   \
     _Pragma("omp parallel for schedule(static)") for (size_t i = 0; i < p->n_fluid; i++)           \
-        rhs_particle(pp, p, nl, i, g_eff, les, ale, mass, eta, out)
+        rhs_particle(pp, p, nl, i, frame, les, ale, mass, eta, out)
 
-void rhs_compute(const physics_params *pp, const particles *p, const neighbour_list *nl, vec g_eff,
-                 double eta, const rates *out)
+void rhs_compute(const physics_params *pp, const particles *p, const neighbour_list *nl,
+                 const tank_frame *frame, double eta, const rates *out)
 {
     /* variable masses come only with shifting (Table 1: eta = 1 implies xi = 1) */
     int variant = (pp->les ? 4 : 0) + (pp->shifting ? 2 : 0) + (pp->shifting && eta > 0.0);

@@ -5,6 +5,7 @@
 #include "core/cells.h"
 #include "core/particles.h"
 #include "core/vec.h"
+#include "boundary/frame.h"
 #include "scheme/physics_params.h"
 
 /* Time derivatives of the integrated fluid state. */
@@ -18,10 +19,11 @@ typedef struct {
 #define rhs_compute DIM_NAME(rhs_compute)
 
 /* Needs fluid p, vol, u_wall and the ghosts refreshed for this stage, and the frozen per-step
- * fields. g_eff = g - a_tank(t) is the body force in the tank frame (theory §6);
+ * fields. `frame` gives the body force of the tank frame at each particle (boundary/frame.h,
+ * theory §6: g - a_tank(t) for a translating tank);
  * eta in [0, 1] weighs the mass equation of Eq. (3) (0: constant masses; the frozen D^m must
  * have been computed when eta > 0). */
-void rhs_compute(const physics_params *pp, const particles *p, const neighbour_list *nl, vec g_eff,
-                 double eta, const rates *out);
+void rhs_compute(const physics_params *pp, const particles *p, const neighbour_list *nl,
+                 const tank_frame *frame, double eta, const rates *out);
 
 #endif

@@ -111,14 +111,9 @@ void solver_free(solver *s)
     memset(s, 0, sizeof *s); /* freeing twice (a failed init, then its caller's close) is safe */
 }
 
-vec solver_g_eff(const solver *s, double t)
+tank_frame solver_frame(const solver *s, double t)
 {
-    double a[3];
-    motion_acceleration(&s->mo, t, a);
-    vec g;
-    for (int d = 0; d < DIM; d++) g.c[d] = -a[d];
-    g.c[1] -= s->cfg->gravity;
-    return g;
+    return motion_frame(&s->mo, s->cfg->gravity, t);
 }
 
 void solver_update_eos(solver *s)

@@ -57,7 +57,7 @@ typedef struct {
 #define solver_step        DIM_NAME(solver_step)
 #define solver_prepare     DIM_NAME(solver_prepare)
 #define solver_advance     DIM_NAME(solver_advance)
-#define solver_g_eff       DIM_NAME(solver_g_eff)
+#define solver_frame       DIM_NAME(solver_frame)
 #define solver_update_eos  DIM_NAME(solver_update_eos)
 #define solver_diagnostics DIM_NAME(solver_diagnostics)
 #define solver_health      DIM_NAME(solver_health)
@@ -75,8 +75,8 @@ int solver_prepare(solver *s, double t_stop);
 void solver_advance(solver *s, double t_stop);
 /* solver_prepare, then solver_advance. */
 int solver_step(solver *s, double t_stop);
-/* g_eff = g - a_tank(t) (theory §6) */
-vec solver_g_eff(const solver *s, double t);
+/* The tank frame at time t (boundary/frame.h; theory §6). */
+tank_frame solver_frame(const solver *s, double t);
 /* The global sums of the time series for the state at s->t (diag/energy.h; uses s->scratch). */
 void solver_diagnostics(solver *s, diagnostics *out);
 /* health_check of the state at s->t within the tank and numerics.density_bound. */

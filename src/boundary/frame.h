@@ -1,0 +1,60 @@
+/* frame: the tank frame, the non-inertial frame in which vcsph solves (theory §6). The motion
+ * gives, at each time, the acceleration of the frame's origin, its angular velocity and
+ * angular acceleration, and the gravity in the frame's axes; a particle at r with velocity u
+ * (both in the frame) then feels, per unit mass,
+ *
+ *     f(r, u) = g - a0 - dOmega/dt x r - Omega x (Omega x r) - 2 Omega x u
+ *
+ * (translation, Euler, centrifugal and Coriolis terms). vcsph's motions today translate the
+ * tank (sway, heave, a table of positions): Omega = 0 and f = g - a0 everywhere, the g_eff of
+ * theory §6. A rotating tank fills in Omega and dOmega/dt; nothing else changes. */
+#ifndef VCSPH_FRAME_H
+#define VCSPH_FRAME_H
+
+#include <stdbool.h>
+
+typedef struct {
+    double gravity[3];    /* g in the frame's axes (m/s^2): (0, -|g|, 0) for a level tank */
+    double origin_acc[3]; /* a0: acceleration of the frame's origin (m/s^2) */
+    double omega[3];      /* angular velocity (rad/s); in 2D only omega[2] */
+    double omega_dot[3];  /* angular acceleration (rad/s^2) */
+    bool rotating;        /* Omega or dOmega/dt not zero */
+} tank_frame;
+
+/* a x b of two 3-vectors */
+static inline void frame_cross(const double a[3], const double b[3], double out[3])
+{
+    out[0] = a[1] * b[2] - a[2] * b[1];
+    out[1] = a[2] * b[0] - a[0] * b[2];
+    out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+#ifdef DIM /* the body force, for the particle code (compiled for DIM = 2 and 3) */
+#include "core/vec.h"
+
+/* The uniform part g - a0, the whole force when the frame does not rotate. */
+static inline vec frame_translation_force(const tank_frame *f)
+{
+    vec g;
+    for (int d = 0; d < DIM; d++) g.c[d] = -f->origin_acc[d] + f->gravity[d];
+    return g;
+}
+
+/* f(r, u) per unit mass at position r, velocity u (the header's formula). */
+static inline vec frame_body_force(const tank_frame *f, vec r, vec u)
+{
+    vec force = frame_translation_force(f);
+    if (!f->rotating) return force;
+    double r3[3] = {0.0, 0.0, 0.0}, u3[3] = {0.0, 0.0, 0.0}, euler[3], spin[3], centrifugal[3],
+           coriolis[3];
+    for (int d = 0; d < DIM; d++) r3[d] = r.c[d], u3[d] = u.c[d];
+    frame_cross(f->omega_dot, r3, euler);
+    frame_cross(f->omega, r3, spin);
+    frame_cross(f->omega, spin, centrifugal);
+    frame_cross(f->omega, u3, coriolis);
+    for (int d = 0; d < DIM; d++) force.c[d] -= euler[d] + centrifugal[d] + 2.0 * coriolis[d];
+    return force;
+}
+#endif
+
+#endif
