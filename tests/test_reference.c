@@ -4,7 +4,7 @@
  * code's structure (docs/architecture.md) must not change a result; this test is what says so.
  *
  * Each reference holds the run's CSV files verbatim (timeseries, events, dissipation,
- * probes) and, for every snapshot, one line per dataset and attribute with its type, length
+ * probes), the XDMF index of the snapshots, and, for every snapshot, one line per dataset and attribute with its type, length
  * and a 64-bit FNV-1a hash of its bytes (h5_digest.h; the snapshots themselves would weigh
  * megabytes). Left out: the version attribute, log.txt (wall times), images (the PNG encoder's
  * bytes depend on the zlib build), and the checkpoint, whose exactness is test_restart's and
@@ -93,7 +93,7 @@ static const reference_run runs[] = {
 static char *digest_of_run(const char *dir)
 {
     static const char *const csv_files[] = {"timeseries.csv", "events.csv", "dissipation.csv",
-                                            "probes.csv"};
+                                            "probes.csv", "snapshots.xmf"};
     char *text = NULL, path[512];
     size_t len = 0;
     FILE *out = open_memstream(&text, &len);
