@@ -7,46 +7,65 @@
 #include <stddef.h>
 #include <stdint.h>
 
+/* The field registry: every array of the store, one line each, in the order of the struct.
+ * SCALAR(type, name, flags, comment) is one value per particle, VECTOR(...) DIM components.
+ * FIELD_STATE marks the persistent state of a fluid particle, reordered with it when the
+ * fluid is sorted by cell (particles_permute_fluid); every other field is recomputed from it
+ * every step or stage. New slots start as zeros (shifting and lambda are read before anything
+ * writes them). Adding a field is one line here: allocation, growth, the bytes of a slot and
+ * the reordering follow from the table. */
+enum { FIELD_STATE = 1 };
+
+#define PARTICLE_FIELDS(SCALAR, VECTOR)                                                            \
+    /* state of every particle (ghosts: mirrored from their source each RK stage) */               \
+    SCALAR(int64_t, id, FIELD_STATE, "global id of the fluid particle (a ghost: its source's)")    \
+    VECTOR(double, x, FIELD_STATE, "position, tank frame")                                         \
+    VECTOR(double, u, FIELD_STATE, "velocity, tank frame; ghosts: free-slip image")                \
+    VECTOR(double, u_wall, 0,                                                                      \
+           "velocity seen by the viscous term and the velocity gradient: the fluid's own, or "     \
+           "the ghost's no-slip / free-slip image")                                                \
+    SCALAR(double, rho, FIELD_STATE, "density")                                                    \
+    SCALAR(double, p, 0, "pressure (EOS)")                                                         \
+    SCALAR(double, m, FIELD_STATE, "mass")                                                         \
+    SCALAR(double, vol, 0, "SPH volume m/rho")                                                     \
+    /* per-step fields, frozen over the RK stages (sec. 2.4); ghosts copy their source's */        \
+    VECTOR(double, grad_rho, 0, "renormalized density gradient <grad rho>^L")                      \
+    SCALAR(double, nu_t, 0, "Smagorinsky eddy viscosity with van Driest damping, m^2/s")           \
+    SCALAR(double, nu_delta, 0, "diffusion coefficient nu^delta of Eq. (5), m^2/s")                \
+    SCALAR(double, lambda, 0, "smallest eigenvalue of L, Eq. (10) (fluid)")                        \
+    VECTOR(double, normal, 0,                                                                      \
+           "unit normal -L^-1 sum grad W V, out of the fluid (theory §4); in S_F below the free " \
+           "surface, the nearest free-surface neighbour's (equidistant ones averaged)")            \
+    SCALAR(double, normal_raw, 0, "|L^-1 sum grad W V| before normalising")                        \
+    SCALAR(double, kernel_sum, 0, "sum_j W_ij, self included: 1 / geometric volume, Eq. (11)")     \
+    SCALAR(double, gamma, 0, "Gamma_i = sum_j W_ij V_j, self included, Eq. (A.2)")                 \
+    SCALAR(double, volume_mismatch, 0,                                                             \
+           "e_i = V_i sum_j W_ij / kappa - 1: SPH over geometric volume, with the geometric "      \
+           "correction only (volume_correction.h)")                                                \
+    SCALAR(uint8_t, surface, 0, "0 interior, 1 in S_F, 2 free surface (Marrone et al. 2010)")      \
+    SCALAR(uint8_t, is_free, 0, "the free-surface test alone, read while `surface` is written")    \
+    SCALAR(double, diff_m, 0, "mass diffusion D^m of Eq. (5) (fluid)")                             \
+    VECTOR(double, shift, 0, "shifting velocity delta-u, Eq. (7)")                                 \
+    VECTOR(double, correction, 0,                                                                  \
+           "the geometric volume correction's velocity (zero without it; ghosts: mirrored), "      \
+           "scheme/volume_correction.h")                                                           \
+    SCALAR(double, diff_rho, 0, "density diffusion D^rho of Eq. (5) (fluid)")                      \
+    /* surface tension, with fluid.surface_tension > 0 only (scheme/surface_tension.h) */          \
+    SCALAR(double, interface, 0, "interface function delta_Sigma, 1/m (ghosts: their source's)")   \
+    SCALAR(double, curvature, 0, "kappa, 1/m (fluid)")                                             \
+    VECTOR(double, st_force, 0,                                                                    \
+           "F^st V_i, the surface-tension force on the particle at the current RK stage, N")       \
+    /* ghosts only, indexed g - n_fluid */                                                         \
+    SCALAR(int32_t, ghost_source, 0, "fluid index it mirrors")                                     \
+    SCALAR(uint8_t, ghost_walls, 0,                                                                \
+           "bit 2d: mirrored across the low wall of axis d; bit 2d+1: high")
+
+#define PARTICLE_SCALAR_MEMBER(type, name, flags, comment) type *name;
+#define PARTICLE_VECTOR_MEMBER(type, name, flags, comment) type *name[DIM];
+
 typedef struct {
     size_t n_fluid, n_total, capacity;
-
-    /* state of every particle (ghosts: mirrored from their source each RK stage) */
-    int64_t *id;               /* global id of the fluid particle (a ghost: its source's) */
-    double *x[DIM];            /* position, tank frame */
-    double *u[DIM];            /* velocity, tank frame; ghosts: free-slip image */
-    double *u_wall[DIM];       /* velocity seen by the viscous term and the velocity gradient:
-                                  the fluid's own, or the ghost's no-slip / free-slip image */
-    double *rho, *p, *m, *vol; /* density, pressure (EOS), mass, SPH volume m/rho */
-
-    /* per-step fields, frozen over the RK stages (sec. 2.4); ghosts copy their source's */
-    double *grad_rho[DIM];   /* renormalized density gradient <grad rho>^L */
-    double *nu_t;            /* Smagorinsky eddy viscosity with van Driest damping, m^2/s */
-    double *nu_delta;        /* diffusion coefficient nu^delta of Eq. (5), m^2/s */
-    double *lambda;          /* smallest eigenvalue of L, Eq. (10) (fluid) */
-    double *normal[DIM];     /* unit normal -L^-1 sum grad W V, out of the fluid (theory §4);
-                                in S_F below the free surface, the nearest free-surface
-                                neighbour's (equidistant ones averaged) */
-    double *normal_raw;      /* |L^-1 sum grad W V| before normalising */
-    double *kernel_sum;      /* sum_j W_ij, self included: 1 / geometric volume, Eq. (11) */
-    double *gamma;           /* Gamma_i = sum_j W_ij V_j, self included, Eq. (A.2) */
-    double *volume_mismatch; /* e_i = V_i sum_j W_ij / kappa - 1: SPH over geometric volume,
-                                with the geometric correction only (volume_correction.h) */
-    uint8_t *surface;        /* 0 interior, 1 in S_F, 2 free surface (Marrone et al. 2010) */
-    uint8_t *is_free;        /* the free-surface test alone, read while `surface` is written */
-    double *diff_m;          /* mass diffusion D^m of Eq. (5) (fluid) */
-    double *shift[DIM];      /* shifting velocity delta-u, Eq. (7) (zero until shifting exists) */
-    double *correction[DIM]; /* the geometric volume correction's velocity (zero without it;
-                                ghosts: mirrored), scheme/volume_correction.h */
-    double *diff_rho;        /* density diffusion D^rho of Eq. (5) (fluid) */
-    /* surface tension, with fluid.surface_tension > 0 only (scheme/surface_tension.h) */
-    double *interface;     /* interface function delta_Sigma, 1/m (ghosts: their source's) */
-    double *curvature;     /* kappa, 1/m (fluid) */
-    double *st_force[DIM]; /* F^st V_i, the surface-tension force on the particle at the
-                              current RK stage, N */
-
-    /* ghosts only, indexed g - n_fluid */
-    int32_t *ghost_source; /* fluid index it mirrors */
-    uint8_t *ghost_walls;  /* bit 2d: mirrored across the low wall of axis d; bit 2d+1: high */
+    PARTICLE_FIELDS(PARTICLE_SCALAR_MEMBER, PARTICLE_VECTOR_MEMBER)
 } particles;
 
 #define particles_init           DIM_NAME(particles_init)
@@ -62,8 +81,8 @@ void particles_free(particles *p);
 int particles_reserve(particles *p, size_t capacity);
 /* The bytes one particle slot takes in the store (every array of it). */
 size_t particles_bytes_per_slot(void);
-/* Reorders the persistent fluid state (id, x, u, rho, m) so that new slot k holds old
- * particle order[k]; scratch needs n_fluid doubles. */
+/* Reorders the persistent fluid state (the fields marked FIELD_STATE: id, x, u, rho, m) so
+ * that new slot k holds old particle order[k]; scratch needs n_fluid doubles. */
 void particles_permute_fluid(particles *p, const size_t *order, double *scratch);
 
 #endif
