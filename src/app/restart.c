@@ -57,8 +57,14 @@
 #define RUN_I64   "period,n_snapshots,n_images,speed_warned"
 #define CSV_SIZES "timeseries,events,dissipation,probes"
 
-static const char *const x_names[3] = {"x_0", "x_1", "x_2"};
-static const char *const u_names[3] = {"u_0", "u_1", "u_2"};
+/* The particles' persistent state (core/particles.h, FIELD_STATE), one item per scalar field
+ * and per component of a vector field ("x_0", "x_1", ...), int64 or float64. */
+#define STATE_ITEM_TYPE(type)                                                                      \
+    _Generic((type *)0, int64_t * : CHECKPOINT_I64, double * : CHECKPOINT_F64, default : -1)
+#define STATE_ITEM_CHECK(type, name, flags, comment)                                               \
+    _Static_assert(!((flags)&FIELD_STATE) || STATE_ITEM_TYPE(type) >= 0, #name);
+PARTICLE_FIELDS(STATE_ITEM_CHECK, STATE_ITEM_CHECK)
+#define COMPONENT_NAME(name, d) ((const char *const[3]){#name "_0", #name "_1", #name "_2"}[d])
 
 typedef struct {
     checkpoint_item items[CHECKPOINT_MAX_ITEMS];
@@ -103,11 +109,13 @@ static void f64_groups(run *r, f64_group g[F64_GROUPS])
 static void add_particles(item_list *l, const particles *p)
 {
     size_t n = p->n_fluid;
-    add(l, "id", CHECKPOINT_I64, n, p->id, NULL);
-    for (int d = 0; d < DIM; d++) add(l, x_names[d], CHECKPOINT_F64, n, p->x[d], NULL);
-    for (int d = 0; d < DIM; d++) add(l, u_names[d], CHECKPOINT_F64, n, p->u[d], NULL);
-    add(l, "rho", CHECKPOINT_F64, n, p->rho, NULL);
-    add(l, "m", CHECKPOINT_F64, n, p->m, NULL);
+#define ADD_SCALAR(type, name, flags, comment)                                                     \
+    if ((flags)&FIELD_STATE) add(l, #name, STATE_ITEM_TYPE(type), n, p->name, NULL);
+#define ADD_VECTOR(type, name, flags, comment)                                                     \
+    if ((flags)&FIELD_STATE)                                                                       \
+        for (int d = 0; d < DIM; d++)                                                              \
+            add(l, COMPONENT_NAME(name, d), STATE_ITEM_TYPE(type), n, p->name[d], NULL);
+    PARTICLE_FIELDS(ADD_SCALAR, ADD_VECTOR)
 }
 
 /* The snapshot names one after the other, each with its NUL; free() it. */
@@ -217,13 +225,15 @@ static int load_particles(solver *s, const checkpoint_data *cd, char *err, size_
     size_t n = p->n_fluid;
     s->step = head[2];
     s->n_edbc = head[3];
-    int rc = take(cd, "id", CHECKPOINT_I64, n, NULL, p->id, err, err_len);
-    for (int d = 0; d < DIM && rc == 0; d++)
-        rc = take(cd, x_names[d], CHECKPOINT_F64, n, NULL, p->x[d], err, err_len) ||
-             take(cd, u_names[d], CHECKPOINT_F64, n, NULL, p->u[d], err, err_len);
-    if (rc == 0)
-        rc = take(cd, "rho", CHECKPOINT_F64, n, NULL, p->rho, err, err_len) ||
-             take(cd, "m", CHECKPOINT_F64, n, NULL, p->m, err, err_len);
+    int rc = 0;
+#define TAKE_SCALAR(type, name, flags, comment)                                                    \
+    if ((flags)&FIELD_STATE && rc == 0)                                                            \
+        rc = take(cd, #name, STATE_ITEM_TYPE(type), n, NULL, p->name, err, err_len);
+#define TAKE_VECTOR(type, name, flags, comment)                                                    \
+    for (int d = 0; d < DIM && (flags)&FIELD_STATE && rc == 0; d++)                                \
+        rc = take(cd, COMPONENT_NAME(name, d), STATE_ITEM_TYPE(type), n, NULL, p->name[d], err,    \
+                  err_len);
+    PARTICLE_FIELDS(TAKE_SCALAR, TAKE_VECTOR)
     p->n_total = n; /* the ghosts are made again by the next solver_prepare */
     return rc ? -1 : 0;
 }

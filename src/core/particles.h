@@ -60,6 +60,14 @@ enum { FIELD_STATE = 1 };
     SCALAR(uint8_t, ghost_walls, 0,                                                                \
            "bit 2d: mirrored across the low wall of axis d; bit 2d+1: high")
 
+/* The fields the RK4 integrator advances (scheme/integrate.c), each with its rate d<name>/dt
+ * (scheme/rhs.h): the persistent state less the id. */
+#define PARTICLE_INTEGRATED(SCALAR, VECTOR) VECTOR(x) VECTOR(u) SCALAR(rho) SCALAR(m)
+#define PARTICLE_COUNT_SCALAR(name)         +1
+#define PARTICLE_COUNT_VECTOR(name)         +DIM
+/* integrated variables per particle, components counted */
+#define PARTICLE_N_INTEGRATED (0 PARTICLE_INTEGRATED(PARTICLE_COUNT_SCALAR, PARTICLE_COUNT_VECTOR))
+
 #define PARTICLE_SCALAR_MEMBER(type, name, flags, comment) type *name;
 #define PARTICLE_VECTOR_MEMBER(type, name, flags, comment) type *name[DIM];
 

@@ -54,16 +54,11 @@ static int build_neighbours(solver *s, double dt)
 /* The integrated variables and their rates, in the same order. */
 static void rk_arrays(solver *s, double **y, double **rate)
 {
-    for (int d = 0; d < DIM; d++) {
-        y[d] = s->p.x[d];
-        y[DIM + d] = s->p.u[d];
-        rate[d] = s->k.dx[d];
-        rate[DIM + d] = s->k.du[d];
-    }
-    y[2 * DIM] = s->p.rho;
-    y[2 * DIM + 1] = s->p.m;
-    rate[2 * DIM] = s->k.drho;
-    rate[2 * DIM + 1] = s->k.dm;
+    int v = 0;
+#define RK_SCALAR(name) y[v] = s->p.name, rate[v++] = s->k.d##name;
+#define RK_VECTOR(name)                                                                            \
+    for (int d = 0; d < DIM; d++) y[v] = s->p.name[d], rate[v++] = s->k.d##name[d];
+    PARTICLE_INTEGRATED(RK_SCALAR, RK_VECTOR)
 }
 
 /* Input power -sum m a_tank . u (theory §10) */

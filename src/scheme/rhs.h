@@ -8,12 +8,12 @@
 #include "boundary/frame.h"
 #include "scheme/physics_params.h"
 
-/* Time derivatives of the integrated fluid state. */
+/* Time derivatives of the integrated fluid state (core/particles.h, PARTICLE_INTEGRATED):
+ * dx = dr/dt = u + du, du = du/dt, drho = drho/dt, dm = dm/dt. */
+#define RATE_SCALAR(name) double *d##name;
+#define RATE_VECTOR(name) double *d##name[DIM];
 typedef struct {
-    double *dx[DIM]; /* dr/dt = u + du */
-    double *du[DIM]; /* du/dt */
-    double *drho;    /* drho/dt */
-    double *dm;      /* dm/dt */
+    PARTICLE_INTEGRATED(RATE_SCALAR, RATE_VECTOR)
 } rates;
 
 #define rhs_compute DIM_NAME(rhs_compute)

@@ -49,15 +49,12 @@ static int alloc_work(solver *s)
         s->sum[v] = malloc(n * sizeof(double));
         if (!s->y0[v] || !s->sum[v]) return -1;
     }
-    double **rate_arrays[RK_VARS];
-    for (int d = 0; d < DIM; d++) {
-        rate_arrays[d] = &s->k.dx[d];
-        rate_arrays[DIM + d] = &s->k.du[d];
-    }
-    rate_arrays[2 * DIM] = &s->k.drho;
-    rate_arrays[2 * DIM + 1] = &s->k.dm;
-    for (int v = 0; v < RK_VARS; v++)
-        if (!(*rate_arrays[v] = malloc(n * sizeof(double)))) return -1;
+#define ALLOC_RATE_SCALAR(name)                                                                    \
+    if (!(s->k.d##name = malloc(n * sizeof(double)))) return -1;
+#define ALLOC_RATE_VECTOR(name)                                                                    \
+    for (int d = 0; d < DIM; d++)                                                                  \
+        if (!(s->k.d##name[d] = malloc(n * sizeof(double)))) return -1;
+    PARTICLE_INTEGRATED(ALLOC_RATE_SCALAR, ALLOC_RATE_VECTOR)
     s->scratch = malloc(n * sizeof(double));
     s->order = malloc(n * sizeof(size_t));
     return s->scratch && s->order ? 0 : -1;
@@ -95,12 +92,10 @@ void solver_free(solver *s)
         free(s->y0[v]);
         free(s->sum[v]);
     }
-    for (int d = 0; d < DIM; d++) {
-        free(s->k.dx[d]);
-        free(s->k.du[d]);
-    }
-    free(s->k.drho);
-    free(s->k.dm);
+#define FREE_RATE_SCALAR(name) free(s->k.d##name);
+#define FREE_RATE_VECTOR(name)                                                                     \
+    for (int d = 0; d < DIM; d++) free(s->k.d##name[d]);
+    PARTICLE_INTEGRATED(FREE_RATE_SCALAR, FREE_RATE_VECTOR)
     free(s->scratch);
     free(s->order);
     surface_tension_free(&s->st_work);

@@ -15,8 +15,8 @@
 #include "scheme/rhs.h"
 #include "scheme/surface_tension.h"
 
-/* integrated fluid variables: x[DIM], u[DIM], rho, m */
-#define RK_VARS (2 * DIM + 2)
+/* integrated fluid variables (PARTICLE_INTEGRATED): x[DIM], u[DIM], rho, m */
+#define RK_VARS PARTICLE_N_INTEGRATED
 
 typedef struct {
     const config *cfg;
