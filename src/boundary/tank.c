@@ -82,11 +82,12 @@ void tank_mirror_step_fields(particles *p, const tank_frame *frame, double c0)
         vec grad_hydro = vec_scale(force, p->rho[i] / (c0 * c0));
         vec dynamic = vec_sub(vec_load(p->grad_rho, i), grad_hydro);
         vec_store(p->grad_rho, g, vec_add(tank_mirror_vector(dynamic, walls), grad_hydro));
-        p->nu_t[g] = p->nu_t[i];
-        p->nu_delta[g] = p->nu_delta[i];
-        p->surface[g] = p->surface[i];
-        vec_store(p->shift, g, tank_mirror_vector(vec_load(p->shift, i), walls));
-        vec_store(p->correction, g, tank_mirror_vector(vec_load(p->correction, i), walls));
+#define GHOST_COPY(type, name, flags, comment)                                                     \
+    if ((flags)&FIELD_GHOST_COPY) p->name[g] = p->name[i];
+#define GHOST_MIRROR(type, name, flags, comment)                                                   \
+    if ((flags)&FIELD_GHOST_MIRROR)                                                                \
+        vec_store(p->name, g, tank_mirror_vector(vec_load(p->name, i), walls));
+        PARTICLE_FIELDS(GHOST_COPY, GHOST_MIRROR)
     }
 }
 

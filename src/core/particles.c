@@ -55,6 +55,12 @@ size_t particles_bytes_per_slot(void)
     _Static_assert(!((flags)&FIELD_STATE) || sizeof(type) <= sizeof(double), #name);
 #define FITS_VECTOR FITS_SCALAR
 PARTICLE_FIELDS(FITS_SCALAR, FITS_VECTOR)
+/* A ghost mirrors vectors and copies scalars. */
+#define GHOST_RULE_SCALAR(type, name, flags, comment)                                              \
+    _Static_assert(!((flags)&FIELD_GHOST_MIRROR), #name " is a scalar: copy it");
+#define GHOST_RULE_VECTOR(type, name, flags, comment)                                              \
+    _Static_assert(!((flags)&FIELD_GHOST_COPY), #name " is a vector: mirror it");
+PARTICLE_FIELDS(GHOST_RULE_SCALAR, GHOST_RULE_VECTOR)
 
 /* a[k] = a[order[k]] for elements of `size` bytes (at most a double's), through scratch */
 static void permute(void *a, size_t size, const size_t *order, size_t n, double *scratch)

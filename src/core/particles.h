@@ -11,10 +11,12 @@
  * SCALAR(type, name, flags, comment) is one value per particle, VECTOR(...) DIM components.
  * FIELD_STATE marks the persistent state of a fluid particle, reordered with it when the
  * fluid is sorted by cell (particles_permute_fluid); every other field is recomputed from it
- * every step or stage. New slots start as zeros (shifting and lambda are read before anything
- * writes them). Adding a field is one line here: allocation, growth, the bytes of a slot and
- * the reordering follow from the table. */
-enum { FIELD_STATE = 1 };
+ * every step or stage. FIELD_GHOST_COPY and FIELD_GHOST_MIRROR mark the per-step fields that a
+ * wall ghost takes from its source once they are computed (tank_mirror_step_fields): as they
+ * are (scalars), or mirrored across the ghost's walls (vectors). New slots start as zeros (shifting
+ * and lambda are read before anything writes them). Adding a field is one line here: allocation,
+ * growth, the bytes of a slot and the reordering follow from the table. */
+enum { FIELD_STATE = 1, FIELD_GHOST_COPY = 2, FIELD_GHOST_MIRROR = 4 };
 
 #define PARTICLE_FIELDS(SCALAR, VECTOR)                                                            \
     /* state of every particle (ghosts: mirrored from their source each RK stage) */               \
@@ -30,8 +32,9 @@ enum { FIELD_STATE = 1 };
     SCALAR(double, vol, 0, "SPH volume m/rho")                                                     \
     /* per-step fields, frozen over the RK stages (sec. 2.4); ghosts copy their source's */        \
     VECTOR(double, grad_rho, 0, "renormalized density gradient <grad rho>^L")                      \
-    SCALAR(double, nu_t, 0, "Smagorinsky eddy viscosity with van Driest damping, m^2/s")           \
-    SCALAR(double, nu_delta, 0, "diffusion coefficient nu^delta of Eq. (5), m^2/s")                \
+    SCALAR(double, nu_t, FIELD_GHOST_COPY,                                                         \
+           "Smagorinsky eddy viscosity with van Driest damping, m^2/s")                            \
+    SCALAR(double, nu_delta, FIELD_GHOST_COPY, "diffusion coefficient nu^delta of Eq. (5), m^2/s") \
     SCALAR(double, lambda, 0, "smallest eigenvalue of L, Eq. (10) (fluid)")                        \
     VECTOR(double, normal, 0,                                                                      \
            "unit normal -L^-1 sum grad W V, out of the fluid (theory §4); in S_F below the free " \
@@ -42,11 +45,12 @@ enum { FIELD_STATE = 1 };
     SCALAR(double, volume_mismatch, 0,                                                             \
            "e_i = V_i sum_j W_ij / kappa - 1: SPH over geometric volume, with the geometric "      \
            "correction only (volume_correction.h)")                                                \
-    SCALAR(uint8_t, surface, 0, "0 interior, 1 in S_F, 2 free surface (Marrone et al. 2010)")      \
+    SCALAR(uint8_t, surface, FIELD_GHOST_COPY,                                                     \
+           "0 interior, 1 in S_F, 2 free surface (Marrone et al. 2010)")                           \
     SCALAR(uint8_t, is_free, 0, "the free-surface test alone, read while `surface` is written")    \
     SCALAR(double, diff_m, 0, "mass diffusion D^m of Eq. (5) (fluid)")                             \
-    VECTOR(double, shift, 0, "shifting velocity delta-u, Eq. (7)")                                 \
-    VECTOR(double, correction, 0,                                                                  \
+    VECTOR(double, shift, FIELD_GHOST_MIRROR, "shifting velocity delta-u, Eq. (7)")                \
+    VECTOR(double, correction, FIELD_GHOST_MIRROR,                                                 \
            "the geometric volume correction's velocity (zero without it; ghosts: mirrored), "      \
            "scheme/volume_correction.h")                                                           \
     SCALAR(double, diff_rho, 0, "density diffusion D^rho of Eq. (5) (fluid)")                      \
