@@ -33,6 +33,19 @@ static inline bool pair_of(const kernel *k, double *const x[DIM], vec xi, const 
     return true;
 }
 
+/* The one neighbour loop of every pass: the pairs (i, j) of particle i at xi whose distance
+ * is within 2h, one by one in `pr` (declared by the caller), in the list's order:
+ *
+ *     pair pr;
+ *     FOR_EACH_PAIR (k, p->x, nl, i, xi, pr) { ... pr.j, pr.r_ji, pr.f ... }
+ *
+ * Each pass supplies only its pair functions (src/physics). `continue` goes to the next pair,
+ * `break` ends the loop. */
+#define FOR_EACH_PAIR(k, x, nl, i, xi, pr)                                                         \
+    for (int32_t pr##_at = 0; pr##_at < (nl)->count[i]; pr##_at++)                                 \
+        if (!pair_of(k, x, xi, neighbour_row(nl, i), pr##_at, &(pr))) {                            \
+        } else
+
 /* A parallel loop over the fluid whose work lies in S_F: S_F is a few layers of a fluid sorted
  * by cell, so static chunks would give one thread most of it. Each particle must write only
  * its own entries, so that the result does not depend on the schedule. */

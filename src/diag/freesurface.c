@@ -48,10 +48,8 @@ static int covered(const kernel *k, const particles *p, const neighbour_list *nl
 {
     vec xi = vec_load(p->x, i), n = vec_load(p->normal, i);
     vec target = vec_axpy(xi, radius, n);
-    const int32_t *row = neighbour_row(nl, i);
-    for (int32_t m = 0; m < nl->count[i]; m++) {
-        pair pr;
-        if (!pair_of(k, p->x, xi, row, m, &pr)) continue;
+    pair pr;
+    FOR_EACH_PAIR (k, p->x, nl, i, xi, pr) {
         vec d = vec_sub(vec_load(p->x, pr.j), target);
         if (pr.r2 >= 2.0 * radius * radius) {
             if (vec_norm2(d) < radius * radius) return 1;
@@ -102,12 +100,10 @@ void freesurface_detect(const kernel *k, double dr, double normal_reference, par
             continue;
         }
         vec xi = vec_load(p->x, i);
-        const int32_t *row = neighbour_row(nl, i);
         double nearest2 = INFINITY;
-        for (int32_t m = 0; m < nl->count[i]; m++) {
-            pair pr;
-            if (pair_of(k, p->x, xi, row, m, &pr) && pr.j < p->n_fluid && p->is_free[pr.j])
-                nearest2 = fmin(nearest2, pr.r * pr.r);
+        pair pr;
+        FOR_EACH_PAIR (k, p->x, nl, i, xi, pr) {
+            if (pr.j < p->n_fluid && p->is_free[pr.j]) nearest2 = fmin(nearest2, pr.r * pr.r);
         }
         if (nearest2 == INFINITY) {
             p->surface[i] = SURFACE_INTERIOR;
@@ -115,10 +111,8 @@ void freesurface_detect(const kernel *k, double dr, double normal_reference, par
         }
         p->surface[i] = SURFACE_REGION;
         vec sum = vec_zero();
-        for (int32_t m = 0; m < nl->count[i]; m++) {
-            pair pr;
-            if (pair_of(k, p->x, xi, row, m, &pr) && pr.j < p->n_fluid && p->is_free[pr.j] &&
-                is_tie(pr.r * pr.r, nearest2))
+        FOR_EACH_PAIR (k, p->x, nl, i, xi, pr) {
+            if (pr.j < p->n_fluid && p->is_free[pr.j] && is_tie(pr.r * pr.r, nearest2))
                 sum = vec_add(sum, vec_load(p->normal, pr.j));
         }
         double length = vec_norm(sum);

@@ -44,10 +44,8 @@ static double geometric_volume_rate(const kernel *k, const particles *p, const n
 {
     vec xi = vec_load(p->x, i), vi = vec_load(v, i);
     double sum = 0.0;
-    const int32_t *row = neighbour_row(nl, i);
-    for (int32_t n = 0; n < nl->count[i]; n++) {
-        pair pr;
-        if (!pair_of(k, p->x, xi, row, n, &pr)) continue;
+    pair pr;
+    FOR_EACH_PAIR (k, p->x, nl, i, xi, pr) {
         sum += vec_dot(vec_sub(vec_load(v, pr.j), vi), pr.r_ji) * pr.f;
     }
     double vgeo = 1.0 / p->kernel_sum[i];

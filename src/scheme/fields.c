@@ -51,10 +51,8 @@ static void geometry_and_gradients(const physics_params *pp, const tank *t, part
         vec xi = vec_load(p->x, i), ui = vec_load(p->u, i);
         double rhoi = p->rho[i];
         neighbour_sums s = {mat_zero(), vec_zero(), 0.0, 0.0, vec_zero(), {{0}}};
-        const int32_t *row = neighbour_row(nl, i);
-        for (int32_t n = 0; n < nl->count[i]; n++) {
-            pair pr;
-            if (!pair_of(k, p->x, xi, row, n, &pr)) continue;
+        pair pr;
+        FOR_EACH_PAIR (k, p->x, nl, i, xi, pr) {
             size_t j = pr.j;
             neighbour_sums_add(&s, &pr, kernel_w(k, pr.r), p->vol[j], p->rho[j] - rhoi,
                                vec_sub(vec_load(p->u_wall, j), ui));
@@ -98,10 +96,8 @@ void fields_shifting(const physics_params *pp, particles *p, const neighbour_lis
     for (size_t i = 0; i < p->n_fluid; i++) {
         vec xi = vec_load(p->x, i), ui = vec_load(p->u, i), sum = vec_zero();
         double max_relative2 = 0.0;
-        const int32_t *row = neighbour_row(nl, i);
-        for (int32_t n = 0; n < nl->count[i]; n++) {
-            pair pr;
-            if (!pair_of(k, p->x, xi, row, n, &pr)) continue;
+        pair pr;
+        FOR_EACH_PAIR (k, p->x, nl, i, xi, pr) {
             sum = vec_add(sum,
                           shifting_pair(kernel_w(k, pr.r), pp->w_dr, pr.r_ji, pr.f, p->vol[pr.j]));
             double rel2 = vec_norm2(vec_sub(vec_load(p->u, pr.j), ui));
@@ -128,10 +124,8 @@ static void diffusion(const physics_params *pp, particles *p, const neighbour_li
         vec xi = vec_load(p->x, i), gi = vec_load(p->grad_rho, i);
         double rhoi = p->rho[i], nui = p->nu_delta[i], mi = p->m[i], vi = p->vol[i];
         double sum_rho = 0.0, sum_m = 0.0, rate = 0.0;
-        const int32_t *row = neighbour_row(nl, i);
-        for (int32_t n = 0; n < nl->count[i]; n++) {
-            pair pr;
-            if (!pair_of(k, p->x, xi, row, n, &pr)) continue;
+        pair pr;
+        FOR_EACH_PAIR (k, p->x, nl, i, xi, pr) {
             size_t j = pr.j;
             double delta_ij = harmonic_mean_capped(nui, p->nu_delta[j], pp->delta_cap);
             sum_rho += diffusion_rho_pair(delta_ij, rhoi, p->rho[j], gi, vec_load(p->grad_rho, j),

@@ -24,10 +24,8 @@ static inline void rhs_particle(const physics_params *pp, const particles *p,
     double mu = pp->rho0 * pp->nu;
     double drho = 0.0, mass_flux = 0.0;
     vec force = vec_zero(); /* per unit volume */
-    const int32_t *row = neighbour_row(nl, i);
-    for (int32_t n = 0; n < nl->count[i]; n++) {
-        pair pr;
-        if (!pair_of(k, p->x, xi, row, n, &pr)) continue;
+    pair pr;
+    FOR_EACH_PAIR (k, p->x, nl, i, xi, pr) {
         size_t j = pr.j;
         double vj = p->vol[j];
         vec u_ji = vec_sub(vec_load(p->u, j), ui);

@@ -77,10 +77,8 @@ static void interface_and_normals(const surface_tension_params *st, const kernel
             vec xi = vec_load(p->x, i), grad_one = vec_zero();
             mat l = mat_zero();
             band = k->norm * p->vol[i];
-            const int32_t *row = neighbour_row(nl, i);
-            for (int32_t m = 0; m < nl->count[i]; m++) {
-                pair pr;
-                if (!pair_of(k, p->x, xi, row, m, &pr)) continue;
+            pair pr;
+            FOR_EACH_PAIR (k, p->x, nl, i, xi, pr) {
                 double fv = pr.f * p->vol[pr.j];
                 grad_one = vec_axpy(grad_one, fv, pr.r_ji);
                 mat_add_outer(&l, fv, pr.r_ji, pr.r_ji);
@@ -127,11 +125,9 @@ static void smoothed_normals(const kernel *k, const particles *p, const neighbou
     for (size_t i = 0; i < p->n_fluid; i++) {
         vec xi = vec_load(p->x, i), sum = vec_scale(vec_load(normal, i), k->norm * p->vol[i]);
         if (p->surface[i] == SURFACE_FREE) {
-            const int32_t *row = neighbour_row(nl, i);
-            for (int32_t m = 0; m < nl->count[i]; m++) {
-                pair pr;
-                if (!pair_of(k, p->x, xi, row, m, &pr) || p->surface[pr.j] != SURFACE_FREE)
-                    continue;
+            pair pr;
+            FOR_EACH_PAIR (k, p->x, nl, i, xi, pr) {
+                if (p->surface[pr.j] != SURFACE_FREE) continue;
                 sum = vec_axpy(sum, kernel_w(k, pr.r) * p->vol[pr.j], vec_load(normal, pr.j));
             }
         }
@@ -157,10 +153,9 @@ static void surface_curvature(const surface_tension_params *st, const kernel *k,
         if (p->surface[i] != SURFACE_FREE) continue;
         vec xi = vec_load(p->x, i), ni = vec_load(normal, i);
         curvature_sums sums = {0.0, 0.0};
-        const int32_t *row = neighbour_row(nl, i);
-        for (int32_t m = 0; m < nl->count[i]; m++) {
-            pair pr;
-            if (!pair_of(k, p->x, xi, row, m, &pr) || p->surface[pr.j] != SURFACE_FREE) continue;
+        pair pr;
+        FOR_EACH_PAIR (k, p->x, nl, i, xi, pr) {
+            if (p->surface[pr.j] != SURFACE_FREE) continue;
             curvature_pair(&sums, ni, vec_load(normal, pr.j), pr.r_ji, pr.f, p->vol[pr.j]);
         }
         kappa[i] = curvature_value(&sums, DIM, st->dr);
@@ -194,10 +189,9 @@ static void band_force(const surface_tension_params *st, const kernel *k, partic
             double sum_free = w_free, sum_kappa = w_free * kappa_surface[i];
             vec sum_normal = vec_scale(vec_load(smooth, i), w_free);
             double delta = self * p->interface[i] / band_sum[i];
-            const int32_t *row = neighbour_row(nl, i);
-            for (int32_t m = 0; m < nl->count[i]; m++) {
-                pair pr;
-                if (!pair_of(k, p->x, xi, row, m, &pr) || p->interface[pr.j] == 0.0) continue;
+            pair pr;
+            FOR_EACH_PAIR (k, p->x, nl, i, xi, pr) {
+                if (p->interface[pr.j] == 0.0) continue;
                 double w = kernel_w(k, pr.r), wv = w * p->vol[pr.j];
                 delta += w * p->interface[pr.j] * p->vol[pr.j] / band_sum[pr.j];
                 if (p->surface[pr.j] != SURFACE_FREE) continue;
@@ -245,10 +239,8 @@ void surface_tension_find_bodies(const kernel *k, const particles *p, const neig
     for (size_t i = 0; i < p->n_fluid; i++) {
         if (p->surface[i] == SURFACE_INTERIOR) continue;
         vec xi = vec_load(p->x, i);
-        const int32_t *row = neighbour_row(nl, i);
-        for (int32_t m = 0; m < nl->count[i]; m++) {
-            pair pr;
-            if (!pair_of(k, p->x, xi, row, m, &pr)) continue;
+        pair pr;
+        FOR_EACH_PAIR (k, p->x, nl, i, xi, pr) {
             if (pr.j >= p->n_fluid)
                 w->body[i].at_wall = 1;
             else if (p->surface[pr.j] != SURFACE_INTERIOR)

@@ -42,10 +42,8 @@ static void surface_band_mismatch(const kernel *k, particles *p, const neighbour
         if (p->surface[i] == SURFACE_INTERIOR) continue;
         vec xi = vec_load(p->x, i);
         double sum = 0.0, weight = 0.0;
-        const int32_t *row = neighbour_row(nl, i);
-        for (int32_t n = 0; n < nl->count[i]; n++) {
-            pair pr;
-            if (!pair_of(k, p->x, xi, row, n, &pr)) continue;
+        pair pr;
+        FOR_EACH_PAIR (k, p->x, nl, i, xi, pr) {
             size_t j = pr.j;
             if (j >= p->n_fluid || p->surface[j] != SURFACE_INTERIOR) continue;
             double w = kernel_w(k, pr.r) * p->vol[j];
@@ -66,10 +64,8 @@ static void correction_velocity(const physics_params *pp, particles *p, const ne
         if (p->lambda[i] >= SHIFTING_LAMBDA_MIN) {
             vec xi = vec_load(p->x, i), sum = vec_zero();
             double ei = p->volume_mismatch[i];
-            const int32_t *row = neighbour_row(nl, i);
-            for (int32_t n = 0; n < nl->count[i]; n++) {
-                pair pr;
-                if (!pair_of(k, p->x, xi, row, n, &pr)) continue;
+            pair pr;
+            FOR_EACH_PAIR (k, p->x, nl, i, xi, pr) {
                 sum = vec_add(sum, volume_correction_pair(ei, p->volume_mismatch[pr.j], pr.r_ji,
                                                           pr.f, p->vol[pr.j]));
             }
