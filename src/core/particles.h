@@ -60,6 +60,7 @@ enum { FIELD_STATE = 1, FIELD_GHOST_COPY = 2, FIELD_GHOST_MIRROR = 4 };
     VECTOR(double, st_force, 0,                                                                    \
            "F^st V_i, the surface-tension force on the particle at the current RK stage, N")       \
     /* ghosts only, indexed g - n_fluid */                                                         \
+    SCALAR(uint8_t, ghost_kind, 0, "what the ghost is (ghost_kind): a wall's image")               \
     SCALAR(int32_t, ghost_source, 0, "fluid index it mirrors")                                     \
     SCALAR(uint8_t, ghost_walls, 0,                                                                \
            "bit 2d: mirrored across the low wall of axis d; bit 2d+1: high")
@@ -79,6 +80,17 @@ typedef struct {
     size_t n_fluid, n_total, capacity;
     PARTICLE_FIELDS(PARTICLE_SCALAR_MEMBER, PARTICLE_VECTOR_MEMBER)
 } particles;
+
+/* What a particle of the tail [n_fluid, n_total) stands for. A loop that treats walls apart
+ * asks this, never the index alone: a halo particle copied from another process (MPI) will sit
+ * in the same tail and is fluid. */
+typedef enum { GHOST_WALL_IMAGE = 0 } ghost_kind;
+
+/* Whether particle j is the image of a fluid particle across a wall. */
+static inline int particle_is_wall_image(const particles *p, size_t j)
+{
+    return j >= p->n_fluid && p->ghost_kind[j - p->n_fluid] == GHOST_WALL_IMAGE;
+}
 
 #define particles_init           DIM_NAME(particles_init)
 #define particles_free           DIM_NAME(particles_free)

@@ -103,7 +103,8 @@ void freesurface_detect(const kernel *k, double dr, double normal_reference, par
         double nearest2 = INFINITY;
         pair pr;
         FOR_EACH_PAIR (k, p->x, nl, i, xi, pr) {
-            if (pr.j < p->n_fluid && p->is_free[pr.j]) nearest2 = fmin(nearest2, pr.r * pr.r);
+            if (!particle_is_wall_image(p, pr.j) && p->is_free[pr.j])
+                nearest2 = fmin(nearest2, pr.r * pr.r);
         }
         if (nearest2 == INFINITY) {
             p->surface[i] = SURFACE_INTERIOR;
@@ -112,7 +113,8 @@ void freesurface_detect(const kernel *k, double dr, double normal_reference, par
         p->surface[i] = SURFACE_REGION;
         vec sum = vec_zero();
         FOR_EACH_PAIR (k, p->x, nl, i, xi, pr) {
-            if (pr.j < p->n_fluid && p->is_free[pr.j] && is_tie(pr.r * pr.r, nearest2))
+            if (!particle_is_wall_image(p, pr.j) && p->is_free[pr.j] &&
+                is_tie(pr.r * pr.r, nearest2))
                 sum = vec_add(sum, vec_load(p->normal, pr.j));
         }
         double length = vec_norm(sum);

@@ -46,7 +46,7 @@ static inline double projected_at(const probes *pr, double s)
  * across the bottom or the roof (axis 1). */
 static inline int counts_for_gauge(const particles *p, size_t j)
 {
-    return j < p->n_fluid || !(p->ghost_walls[j - p->n_fluid] & (3u << 2));
+    return !particle_is_wall_image(p, j) || !(p->ghost_walls[j - p->n_fluid] & (3u << 2));
 }
 
 /* distance from particle j to the gauge's vertical line */

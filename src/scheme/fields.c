@@ -131,7 +131,7 @@ static void diffusion(const physics_params *pp, particles *p, const neighbour_li
             sum_rho += diffusion_rho_pair(delta_ij, rhoi, p->rho[j], gi, vec_load(p->grad_rho, j),
                                           pr.r_ji, pr.f, p->vol[j]);
             rate += diffusion_rate_pair(delta_ij, pr.f, p->vol[j]);
-            if (mass && j < p->n_fluid)
+            if (mass && !particle_is_wall_image(p, j))
                 sum_m += mass_diffusion_pair(pp->delta_c0_h, mi, p->m[j], pr.f, vi, p->vol[j]);
         }
         p->diff_rho[i] = sum_rho * diffusion_stability_factor(rate, dt);

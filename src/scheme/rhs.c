@@ -35,7 +35,7 @@ static inline void rhs_particle(const physics_params *pp, const particles *p,
             transport_ji = vec_add(u_ji, vec_sub(duj, dui));
             double flux = ale_flux_pair(rhoi, dui, p->rho[j], duj, pr.r_ji, pr.f);
             drho += flux * vj;
-            if (variable_mass && j < p->n_fluid) mass_flux += flux * vi * vj;
+            if (variable_mass && !particle_is_wall_image(p, j)) mass_flux += flux * vi * vj;
             force = vec_add(force, ale_momentum_pair(p->rho[j], u_ji, duj, pr.r_ji, pr.f, vj));
         }
         drho += continuity_pair(rhoi, transport_ji, pr.r_ji, pr.f, vj);

@@ -241,7 +241,7 @@ void surface_tension_find_bodies(const kernel *k, const particles *p, const neig
         vec xi = vec_load(p->x, i);
         pair pr;
         FOR_EACH_PAIR (k, p->x, nl, i, xi, pr) {
-            if (pr.j >= p->n_fluid)
+            if (particle_is_wall_image(p, pr.j))
                 w->body[i].at_wall = 1;
             else if (p->surface[pr.j] != SURFACE_INTERIOR)
                 unite(w->parent, (int32_t)i, (int32_t)pr.j);

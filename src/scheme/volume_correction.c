@@ -45,7 +45,7 @@ static void surface_band_mismatch(const kernel *k, particles *p, const neighbour
         pair pr;
         FOR_EACH_PAIR (k, p->x, nl, i, xi, pr) {
             size_t j = pr.j;
-            if (j >= p->n_fluid || p->surface[j] != SURFACE_INTERIOR) continue;
+            if (particle_is_wall_image(p, j) || p->surface[j] != SURFACE_INTERIOR) continue;
             double w = kernel_w(k, pr.r) * p->vol[j];
             sum += w * p->volume_mismatch[j];
             weight += w;
