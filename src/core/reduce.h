@@ -12,5 +12,10 @@ double reduce_sum(const double *a, size_t n);
 /* Largest of a[0..n) (-inf when n = 0); exact in any order. */
 double reduce_max(const double *a, size_t n);
 double reduce_min(const double *a, size_t n);
+/* A count of the liquid (free-surface particles, EdBC corrections), counted over this
+ * process's particles, totalled over the processes: one process holds them all, so today the
+ * count itself; the MPI build sums it (exact in any order). Counts that only steer this
+ * process's own work (bounced particles, the longest neighbour row) stay local. */
+long reduce_total(long local);
 
 #endif

@@ -35,7 +35,7 @@ void volume_compute(const particles *p, double cell_volume, double *scratch, vol
     long n = 0;
 #pragma omp parallel for schedule(static) reduction(+ : n)
     for (size_t i = 0; i < p->n_fluid; i++) n += p->surface[i] == SURFACE_FREE;
-    out->n_free_surface = n;
+    out->n_free_surface = reduce_total(n);
 }
 
 /* Eq. (13) of particle i with the velocity field v: Vgeo_i^2 sum_j v_ji . grad_i W_ij */

@@ -1,5 +1,6 @@
 /* control: EdBC, Eq. (9); the eta of the step is set by eta_control. */
 #include "scheme/control.h"
+#include "core/reduce.h"
 #include "diag/freesurface.h"
 #include "physics/eos.h"
 
@@ -24,5 +25,5 @@ void control_edbc(solver *s)
         p->vol[i] = p->m[i] / rho0;
         n++;
     }
-    s->n_edbc = n;
+    s->n_edbc = reduce_total(n);
 }
