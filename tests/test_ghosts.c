@@ -87,7 +87,9 @@ static void test_mirrored_state(void **state)
     tank_mirror_step_fields(&p, &frame, c0);
     for (size_t g = p.n_fluid; g < p.n_total; g++) {
         size_t i = (size_t)p.ghost_source[g - p.n_fluid];
-        unsigned walls = p.ghost_walls[g - p.n_fluid];
+        /* the box's map table is indexed by the walls: bit 2d the low wall of axis d, 2d + 1
+           the high one; the mirror formulas below check its reflections */
+        unsigned walls = p.ghost_map[g - p.n_fluid];
         for (int d = 0; d < DIM; d++) {
             int low = (walls >> (2 * d)) & 1, high = (walls >> (2 * d + 1)) & 1;
             double x = p.x[d][i];

@@ -44,7 +44,7 @@ static void check_against_brute_force(size_t n, double radius)
     assert_int_equal(tank_make_ghosts(&t, &p, radius), 0);
     for (size_t g = p.n_fluid; g < p.n_total; g++) {
         size_t i = (size_t)p.ghost_source[g - p.n_fluid];
-        vec_store(p.x, g, tank_mirror_position(&t, vec_load(p.x, i), p.ghost_walls[g - p.n_fluid]));
+        vec_store(p.x, g, ghost_map_point(particle_ghost_map(&p, g), vec_load(p.x, i)));
     }
     assert_true(p.n_total > p.n_fluid);
 

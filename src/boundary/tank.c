@@ -4,8 +4,70 @@
 
 #include <stdint.h>
 
+/* The box's walls as planes n . x = distance, n pointing into the liquid: plane 2d is the low
+ * wall of axis d (e_d, 0), plane 2d + 1 the high one (-e_d, -size_d). */
+typedef struct {
+    vec normal;
+    double distance;
+} wall_plane;
+
+static wall_plane box_plane(const tank *t, int k)
+{
+    int d = k / 2, high = k % 2;
+    wall_plane w = {vec_zero(), high ? -t->size[d] : 0.0};
+    w.normal.c[d] = high ? -1.0 : 1.0;
+    return w;
+}
+
+/* The reflection across a plane: a = I - 2 n n^T, b = 2 distance n (exact for the box's
+ * axis-aligned planes: a = diag(+-1), b = 0 or 2 size_d). */
+static ghost_map reflection(wall_plane w)
+{
+    ghost_map m;
+    for (int r = 0; r < DIM; r++) {
+        for (int c = 0; c < DIM; c++)
+            m.a[r][c] = (r == c ? 1.0 : 0.0) - 2.0 * w.normal.c[r] * w.normal.c[c];
+        m.b[r] = 2.0 * w.distance * w.normal.c[r];
+    }
+    return m;
+}
+
+/* outer after inner: x -> a_o (a_i x + b_i) + b_o */
+static ghost_map compose(const ghost_map *outer, const ghost_map *inner)
+{
+    ghost_map m;
+    vec b_inner;
+    for (int r = 0; r < DIM; r++) {
+        b_inner.c[r] = inner->b[r];
+        for (int c = 0; c < DIM; c++) {
+            m.a[r][c] = 0.0;
+            for (int k = 0; k < DIM; k++) m.a[r][c] += outer->a[r][k] * inner->a[k][c];
+        }
+    }
+    vec b = ghost_map_point(outer, b_inner);
+    for (int r = 0; r < DIM; r++) m.b[r] = b.c[r];
+    return m;
+}
+
+/* Entry `walls` of the table is the product of the reflections across the planes whose bits
+ * are set: one wall, an edge (two) or a corner (three). */
+static void box_ghost_maps(const tank *t, ghost_map maps[GHOST_MAPS_MAX])
+{
+    for (unsigned walls = 0; walls < (1u << (2 * DIM)); walls++) {
+        ghost_map m = {{{0}}, {0}};
+        for (int d = 0; d < DIM; d++) m.a[d][d] = 1.0;
+        for (int k = 0; k < 2 * DIM; k++) {
+            if (!(walls & (1u << k))) continue;
+            ghost_map r = reflection(box_plane(t, k));
+            m = compose(&r, &m);
+        }
+        maps[walls] = m;
+    }
+}
+
 int tank_make_ghosts(const tank *t, particles *p, double reach)
 {
+    box_ghost_maps(t, p->ghost_maps);
     size_t n_fluid = p->n_fluid, g = n_fluid;
     /* serial and in fluid order: the ghost list is the same for any thread count */
     for (size_t i = 0; i < n_fluid; i++) {
@@ -34,7 +96,7 @@ int tank_make_ghosts(const tank *t, particles *p, double reach)
                 if (g + 1 > p->capacity && particles_reserve(p, 2 * p->capacity)) return -1;
                 p->ghost_kind[g - n_fluid] = GHOST_WALL_IMAGE;
                 p->ghost_source[g - n_fluid] = (int32_t)i;
-                p->ghost_walls[g - n_fluid] = (uint8_t)walls;
+                p->ghost_map[g - n_fluid] = (uint8_t)walls;
                 p->id[g] = p->id[i];
                 g++;
             }
@@ -55,10 +117,10 @@ void tank_refresh_ghosts(const tank *t, particles *p, const tank_frame *frame, d
 #pragma omp parallel for schedule(static)
     for (size_t g = n_fluid; g < p->n_total; g++) {
         size_t i = (size_t)p->ghost_source[g - n_fluid];
-        unsigned walls = p->ghost_walls[g - n_fluid];
+        const ghost_map *map = particle_ghost_map(p, g);
         vec xi = vec_load(p->x, i), ui = vec_load(p->u, i);
-        vec xg = tank_mirror_position(t, xi, walls);
-        vec ug = tank_mirror_vector(ui, walls);
+        vec xg = ghost_map_point(map, xi);
+        vec ug = ghost_map_vector(map, ui);
         vec_store(p->x, g, xg);
         vec_store(p->u, g, ug);
         vec_store(p->u_wall, g, no_slip ? vec_scale(ui, -1.0) : ug);
@@ -78,16 +140,16 @@ void tank_mirror_step_fields(particles *p, const tank_frame *frame, double c0)
 #pragma omp parallel for schedule(static)
     for (size_t g = n_fluid; g < p->n_total; g++) {
         size_t i = (size_t)p->ghost_source[g - n_fluid];
-        unsigned walls = p->ghost_walls[g - n_fluid];
+        const ghost_map *map = particle_ghost_map(p, g);
         vec force = frame_body_force(frame, vec_load(p->x, i), vec_load(p->u, i));
         vec grad_hydro = vec_scale(force, p->rho[i] / (c0 * c0));
         vec dynamic = vec_sub(vec_load(p->grad_rho, i), grad_hydro);
-        vec_store(p->grad_rho, g, vec_add(tank_mirror_vector(dynamic, walls), grad_hydro));
+        vec_store(p->grad_rho, g, vec_add(ghost_map_vector(map, dynamic), grad_hydro));
 #define GHOST_COPY(type, name, flags, comment)                                                     \
     if ((flags)&FIELD_GHOST_COPY) p->name[g] = p->name[i];
 #define GHOST_MIRROR(type, name, flags, comment)                                                   \
     if ((flags)&FIELD_GHOST_MIRROR)                                                                \
-        vec_store(p->name, g, tank_mirror_vector(vec_load(p->name, i), walls));
+        vec_store(p->name, g, ghost_map_vector(map, vec_load(p->name, i)));
         PARTICLE_FIELDS(GHOST_COPY, GHOST_MIRROR)
     }
 }

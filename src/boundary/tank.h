@@ -75,21 +75,4 @@ static inline int tank_contains(const tank *t, vec x)
     return 1;
 }
 
-/* Mirror of a vector across the walls in `walls`: the components normal to them reversed. */
-static inline vec tank_mirror_vector(vec v, unsigned walls)
-{
-    for (int d = 0; d < DIM; d++)
-        if (walls & (3u << (2 * d))) v.c[d] = -v.c[d];
-    return v;
-}
-
-static inline vec tank_mirror_position(const tank *t, vec x, unsigned walls)
-{
-    for (int d = 0; d < DIM; d++) {
-        if (walls & (1u << (2 * d))) x.c[d] = -x.c[d];
-        if (walls & (2u << (2 * d))) x.c[d] = 2.0 * t->size[d] - x.c[d];
-    }
-    return x;
-}
-
 #endif

@@ -4,6 +4,8 @@
 #define VCSPH_PARTICLES_H
 
 #include "core/dim.h"
+#include "core/vec.h"
+
 #include <stddef.h>
 #include <stdint.h>
 
@@ -62,8 +64,7 @@ enum { FIELD_STATE = 1, FIELD_GHOST_COPY = 2, FIELD_GHOST_MIRROR = 4 };
     /* ghosts only, indexed g - n_fluid */                                                         \
     SCALAR(uint8_t, ghost_kind, 0, "what the ghost is (ghost_kind): a wall's image")               \
     SCALAR(int32_t, ghost_source, 0, "fluid index it mirrors")                                     \
-    SCALAR(uint8_t, ghost_walls, 0,                                                                \
-           "bit 2d: mirrored across the low wall of axis d; bit 2d+1: high")
+    SCALAR(uint8_t, ghost_map, 0, "its map from the source: an index into ghost_maps")
 
 /* The fields the RK4 integrator advances (scheme/integrate.c), each with its rate d<name>/dt
  * (scheme/rhs.h): the persistent state less the id. */
@@ -73,18 +74,54 @@ enum { FIELD_STATE = 1, FIELD_GHOST_COPY = 2, FIELD_GHOST_MIRROR = 4 };
 /* integrated variables per particle, components counted */
 #define PARTICLE_N_INTEGRATED (0 PARTICLE_INTEGRATED(PARTICLE_COUNT_SCALAR, PARTICLE_COUNT_VECTOR))
 
+/* A ghost's affine map from its source: position x_g = a x_i + b, a vector v_g = a v_i (a wall's
+ * image: a reflection, or the product of the reflections of an edge or a corner; a halo copy:
+ * the identity or a period's translation). The provider that makes the ghosts (the tank's
+ * walls, boundary/tank.c) fills the table; each ghost names its entry. */
+typedef struct {
+    double a[DIM][DIM];
+    double b[DIM];
+} ghost_map;
+#define GHOST_MAPS_MAX 64 /* the box: one entry per set of walls, bits 2d (low) and 2d+1 (high) */
+
 #define PARTICLE_SCALAR_MEMBER(type, name, flags, comment) type *name;
 #define PARTICLE_VECTOR_MEMBER(type, name, flags, comment) type *name[DIM];
 
 typedef struct {
     size_t n_fluid, n_total, capacity;
     PARTICLE_FIELDS(PARTICLE_SCALAR_MEMBER, PARTICLE_VECTOR_MEMBER)
+    ghost_map ghost_maps[GHOST_MAPS_MAX];
 } particles;
 
 /* What a particle of the tail [n_fluid, n_total) stands for. A loop that treats walls apart
  * asks this, never the index alone: a halo particle copied from another process (MPI) will sit
  * in the same tail and is fluid. */
 typedef enum { GHOST_WALL_IMAGE = 0 } ghost_kind;
+
+/* The map of ghost g (n_fluid <= g < n_total). */
+static inline const ghost_map *particle_ghost_map(const particles *p, size_t g)
+{
+    return &p->ghost_maps[p->ghost_map[g - p->n_fluid]];
+}
+
+/* a v, the sum in the order of the columns (a reflection reverses components exactly) */
+static inline vec ghost_map_vector(const ghost_map *m, vec v)
+{
+    vec r;
+    for (int d = 0; d < DIM; d++) {
+        r.c[d] = 0.0;
+        for (int k = 0; k < DIM; k++) r.c[d] += m->a[d][k] * v.c[k];
+    }
+    return r;
+}
+
+/* a x + b */
+static inline vec ghost_map_point(const ghost_map *m, vec x)
+{
+    vec r = ghost_map_vector(m, x);
+    for (int d = 0; d < DIM; d++) r.c[d] += m->b[d];
+    return r;
+}
 
 /* Whether particle j is the image of a fluid particle across a wall. */
 static inline int particle_is_wall_image(const particles *p, size_t j)

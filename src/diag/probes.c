@@ -43,10 +43,10 @@ static inline double projected_at(const probes *pr, double s)
 }
 
 /* Whether particle j counts for a gauge: the fluid and the ghosts that are not mirrored
- * across the bottom or the roof (axis 1). */
+ * across the bottom or the roof (their map keeps the vertical, axis 1, as it is). */
 static inline int counts_for_gauge(const particles *p, size_t j)
 {
-    return !particle_is_wall_image(p, j) || !(p->ghost_walls[j - p->n_fluid] & (3u << 2));
+    return !particle_is_wall_image(p, j) || particle_ghost_map(p, j)->a[1][1] > 0.0;
 }
 
 /* distance from particle j to the gauge's vertical line */

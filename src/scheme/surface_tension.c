@@ -103,10 +103,9 @@ static void mirror_into_ghosts(particles *p, surface_tension_work *w)
 #pragma omp parallel for schedule(static)
     for (size_t g = p->n_fluid; g < p->n_total; g++) {
         size_t i = (size_t)p->ghost_source[g - p->n_fluid];
-        unsigned walls = p->ghost_walls[g - p->n_fluid];
         p->interface[g] = p->interface[i];
         w->band_sum[g] = w->band_sum[i];
-        vec_store(w->normal, g, tank_mirror_vector(vec_load(w->normal, i), walls));
+        vec_store(w->normal, g, ghost_map_vector(particle_ghost_map(p, g), vec_load(w->normal, i)));
     }
 }
 
@@ -136,8 +135,7 @@ static void smoothed_normals(const kernel *k, const particles *p, const neighbou
     }
     for (size_t g = p->n_fluid; g < p->n_total; g++) {
         size_t i = (size_t)p->ghost_source[g - p->n_fluid];
-        vec_store(smooth, g,
-                  tank_mirror_vector(vec_load(smooth, i), p->ghost_walls[g - p->n_fluid]));
+        vec_store(smooth, g, ghost_map_vector(particle_ghost_map(p, g), vec_load(smooth, i)));
     }
 }
 
