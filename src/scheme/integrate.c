@@ -5,6 +5,7 @@
 #include "diag/volume.h"
 #include "scheme/control.h"
 #include "scheme/fields.h"
+#include "scheme/passes.h"
 #include "scheme/solver.h"
 #include "scheme/volume_correction.h"
 
@@ -105,30 +106,7 @@ int solver_prepare(solver *s, double t_stop)
     if (s->t + dt > t_stop) dt = t_stop - s->t;
     s->dt = dt;
     if (build_neighbours(s, dt)) return -1;
-    tank_frame frame = solver_frame(s, s->t);
-    fields_geometry(&s->pp, &s->tank, &s->p, &s->nl);
-    s->eta_switched = 0;
-    if (s->cfg->scheme == SCHEME_DELTA_PLUS_ALE) {
-        /* eps_V1 of this state decides eta for the step (theory §8) */
-        volume_errors ve;
-        volume_compute(&s->p, s->dv.cell_volume, s->scratch, &ve);
-        s->eta_switched = eta_control_update(&s->eta_control, s->t, ve.eps_v1, s->eta_switch_detail,
-                                             sizeof s->eta_switch_detail);
-    }
-    control_edbc(s);
-    if (s->n_edbc > 0) /* the ghosts of corrected particles carry the corrected state */
-        tank_refresh_ghosts(&s->tank, &s->p, &frame, s->pp.rho0, s->pp.c0);
-    if (s->pp.shifting) fields_shifting(&s->pp, &s->p, &s->nl);
-    if (s->pp.volume_correction) volume_correction_apply(&s->pp, &s->p, &s->nl);
-    if (tank_bounce_back(&s->tank, &s->p, s->dv.dr, dt) > 0) /* ghosts of reversed velocities */
-        tank_refresh_ghosts(&s->tank, &s->p, &frame, s->pp.rho0, s->pp.c0);
-    fields_frozen_terms(&s->pp, &s->p, &s->nl, &frame, s->eta_control.eta > 0.0, s->dt);
-    if (s->pp.surface_tension) { /* the force of stage 0, and room for the other stages' */
-        if (surface_tension_reserve(&s->st_work, s->p.n_total)) return -1;
-        surface_tension_find_bodies(&s->pp.k, &s->p, &s->nl, &s->st_work);
-        surface_tension_compute(&s->st, &s->pp.k, &s->p, &s->nl, &s->st_work);
-    }
-    return 0;
+    return passes_prepare(s);
 }
 
 void solver_advance(solver *s, double t_stop)

@@ -1,0 +1,143 @@
+/* passes: the preparation of a step as a list of passes (docs/architecture.md). Each pass
+ * names the particle fields it reads and writes (core/particles.h's registry); the driver
+ * runs them in order and brings the wall ghosts up to date, in this one place, before a pass
+ * that reads a field an earlier pass changed. */
+#include "scheme/passes.h"
+#include "diag/volume.h"
+#include "scheme/control.h"
+#include "scheme/fields.h"
+#include "scheme/volume_correction.h"
+
+#include <stdint.h>
+
+/* One bit per field of the registry. */
+enum {
+#define FIELD_BIT_ENUM(type, name, flags, comment) FIELD_BIT_##name,
+    PARTICLE_FIELDS(FIELD_BIT_ENUM, FIELD_BIT_ENUM) FIELD_BITS
+};
+_Static_assert(FIELD_BITS <= 64, "the field masks are 64 bits");
+#define F(name) (UINT64_C(1) << FIELD_BIT_##name)
+
+/* The fields a wall ghost takes from its source at every refresh (tank_refresh_ghosts): a pass
+ * that changes one of them leaves the ghosts stale until the next refresh. */
+#define GHOST_STATE (F(x) | F(u) | F(u_wall) | F(rho) | F(p) | F(m) | F(vol))
+
+typedef struct {
+    const char *name;
+    uint64_t reads, writes; /* fields, the ghosts' copies included */
+    /* NULL: always; otherwise whether the pass runs for this case and state */
+    bool (*active)(const solver *s);
+    /* Returns the particles whose state it changed (0: none, the ghosts stay as they are), or
+       -1 when out of memory. */
+    long (*run)(solver *s, const tank_frame *frame);
+} step_pass;
+
+static long geometry(solver *s, const tank_frame *frame)
+{
+    (void)frame;
+    fields_geometry(&s->pp, &s->tank, &s->p, &s->nl);
+    return 0;
+}
+
+static bool has_eta_control(const solver *s) { return s->cfg->scheme == SCHEME_DELTA_PLUS_ALE; }
+
+/* eps_V1 of this state decides eta for the step (theory §8) */
+static long eta_control(solver *s, const tank_frame *frame)
+{
+    (void)frame;
+    volume_errors ve;
+    volume_compute(&s->p, s->dv.cell_volume, s->scratch, &ve);
+    s->eta_switched = eta_control_update(&s->eta_control, s->t, ve.eps_v1, s->eta_switch_detail,
+                                         sizeof s->eta_switch_detail);
+    return 0;
+}
+
+static long edbc(solver *s, const tank_frame *frame)
+{
+    (void)frame;
+    control_edbc(s);
+    return s->n_edbc;
+}
+
+static bool shifts(const solver *s) { return s->pp.shifting; }
+
+static long shifting(solver *s, const tank_frame *frame)
+{
+    (void)frame;
+    fields_shifting(&s->pp, &s->p, &s->nl);
+    return 0;
+}
+
+static bool corrects(const solver *s) { return s->pp.volume_correction; }
+
+static long correction(solver *s, const tank_frame *frame)
+{
+    (void)frame;
+    volume_correction_apply(&s->pp, &s->p, &s->nl);
+    return 0;
+}
+
+static long bounce_back(solver *s, const tank_frame *frame)
+{
+    (void)frame;
+    return (long)tank_bounce_back(&s->tank, &s->p, s->dv.dr, s->dt);
+}
+
+static long frozen_terms(solver *s, const tank_frame *frame)
+{
+    fields_frozen_terms(&s->pp, &s->p, &s->nl, frame, s->eta_control.eta > 0.0, s->dt);
+    return 0;
+}
+
+static bool has_surface_tension(const solver *s) { return s->pp.surface_tension; }
+
+/* the force of stage 0, and room for the other stages' */
+static long surface_tension(solver *s, const tank_frame *frame)
+{
+    (void)frame;
+    if (surface_tension_reserve(&s->st_work, s->p.n_total)) return -1;
+    surface_tension_find_bodies(&s->pp.k, &s->p, &s->nl, &s->st_work);
+    surface_tension_compute(&s->st, &s->pp.k, &s->p, &s->nl, &s->st_work);
+    return 0;
+}
+
+/* In order. EdBC, the shifting and the correction need the step's geometry; the shifting is
+ * weighed by the volumes EdBC corrects; bounce-back needs the transport velocity u + du + dv
+ * whole; the frozen terms and surface tension see the bounced velocities. */
+static const step_pass prepare_passes[] = {
+    {"geometry", F(x) | F(u) | F(u_wall) | F(rho) | F(vol),
+     F(lambda) | F(normal) | F(normal_raw) | F(kernel_sum) | F(gamma) | F(grad_rho) | F(nu_t) |
+         F(nu_delta) | F(surface) | F(is_free),
+     NULL, geometry},
+    {"eta control", F(kernel_sum) | F(surface), 0, has_eta_control, eta_control},
+    {"EdBC (Eq. 9)", F(surface) | F(lambda), F(rho) | F(p) | F(vol), NULL, edbc},
+    {"shifting (Eq. 7)", F(x) | F(vol) | F(lambda) | F(normal) | F(surface), F(shift), shifts,
+     shifting},
+    {"volume correction", F(x) | F(rho) | F(vol) | F(kernel_sum) | F(lambda) | F(surface),
+     F(volume_mismatch) | F(correction), corrects, correction},
+    {"bounce-back", F(x) | F(u) | F(shift) | F(correction), F(u) | F(shift) | F(correction), NULL,
+     bounce_back},
+    {"frozen terms", F(x) | F(u) | F(rho) | F(vol) | F(grad_rho) | F(nu_delta) | F(surface),
+     F(diff_rho) | F(diff_m), NULL, frozen_terms},
+    {"surface tension", F(x) | F(vol) | F(surface) | F(normal),
+     F(interface) | F(curvature) | F(st_force), has_surface_tension, surface_tension},
+};
+
+int passes_prepare(solver *s)
+{
+    tank_frame frame = solver_frame(s, s->t);
+    s->eta_switched = 0;
+    uint64_t stale = 0; /* fields changed since the ghosts were last refreshed */
+    for (size_t k = 0; k < sizeof prepare_passes / sizeof prepare_passes[0]; k++) {
+        const step_pass *pass = &prepare_passes[k];
+        if (pass->active && !pass->active(s)) continue;
+        if (stale & pass->reads) {
+            tank_refresh_ghosts(&s->tank, &s->p, &frame, s->pp.rho0, s->pp.c0);
+            stale = 0;
+        }
+        long changed = pass->run(s, &frame);
+        if (changed < 0) return -1;
+        if (changed > 0) stale |= pass->writes & GHOST_STATE;
+    }
+    return 0;
+}
