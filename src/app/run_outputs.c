@@ -179,33 +179,35 @@ void run_write_series_row(run *r, int with_geometry)
     r->speed_warned = fast;
 }
 
-/* The fields of docs/outputs.md (lambda, surface and eps_vi from the geometry of this step). */
+/* The snapshot type of a field of the registry. */
+#define SNAPSHOT_TYPE(type)                                                                        \
+    _Generic((type *)0, double *: FIELD_DOUBLE, int64_t *: FIELD_INT64, int32_t *: FIELD_INT32,    \
+             uint8_t *: FIELD_UINT8)
+
+/* At most every field of the registry. */
+#define COUNT_FIELD(type, name, flags, snapshot, comment) +1
+enum { SNAPSHOT_FIELDS_MAX = 0 PARTICLE_FIELDS(COUNT_FIELD, COUNT_FIELD) };
+
+/* The fields of docs/outputs.md: those of the registry with a snapshot name (core/particles.h),
+ * in its order; lambda, surface and eps_vi from the geometry of this step. */
 static int snapshot_fields(solver *s, snapshot_field *f)
 {
     particles *p = &s->p;
-    int n = 0;
-    f[n++] = (snapshot_field){"id", FIELD_INT64, 1, {p->id}};
-    f[n] = (snapshot_field){"position", FIELD_DOUBLE, DIM, {0}};
-    for (int d = 0; d < DIM; d++) f[n].component[d] = p->x[d];
-    n++;
-    f[n] = (snapshot_field){"velocity", FIELD_DOUBLE, DIM, {0}};
-    for (int d = 0; d < DIM; d++) f[n].component[d] = p->u[d];
-    n++;
-    f[n++] = (snapshot_field){"density", FIELD_DOUBLE, 1, {p->rho}};
-    f[n++] = (snapshot_field){"pressure", FIELD_DOUBLE, 1, {p->p}};
-    f[n++] = (snapshot_field){"mass", FIELD_DOUBLE, 1, {p->m}};
-    f[n++] = (snapshot_field){"volume", FIELD_DOUBLE, 1, {p->vol}};
-    f[n++] = (snapshot_field){"lambda", FIELD_DOUBLE, 1, {p->lambda}};
-    f[n++] = (snapshot_field){"surface", FIELD_UINT8, 1, {p->surface}};
-    /* the local volume error, computed into scratch just before writing */
     for (size_t i = 0; i < p->n_fluid; i++)
-        s->scratch[i] = volume_local_error(p, i, s->dv.cell_volume);
-    f[n++] = (snapshot_field){"eps_vi", FIELD_DOUBLE, 1, {s->scratch}};
-    f[n] = (snapshot_field){"shifting", FIELD_DOUBLE, DIM, {0}};
-    for (int d = 0; d < DIM; d++) f[n].component[d] = p->shift[d];
-    n++;
-    if (s->pp.surface_tension)
-        f[n++] = (snapshot_field){"curvature", FIELD_DOUBLE, 1, {p->curvature}};
+        p->eps_vi[i] = volume_local_error(p, i, s->dv.cell_volume);
+    int n = 0;
+#define WRITTEN(flags, snapshot)                                                                   \
+    ((snapshot) != NULL && (s->pp.surface_tension || !((flags)&FIELD_SURFACE_TENSION)))
+#define SNAPSHOT_SCALAR(type, name, flags, snapshot, comment)                                      \
+    if (WRITTEN(flags, snapshot))                                                                  \
+        f[n++] = (snapshot_field){snapshot, SNAPSHOT_TYPE(type), 1, {p->name}};
+#define SNAPSHOT_VECTOR(type, name, flags, snapshot, comment)                                      \
+    if (WRITTEN(flags, snapshot)) {                                                                \
+        f[n] = (snapshot_field){snapshot, SNAPSHOT_TYPE(type), DIM, {0}};                          \
+        for (int d = 0; d < DIM; d++) f[n].component[d] = p->name[d];                              \
+        n++;                                                                                       \
+    }
+    PARTICLE_FIELDS(SNAPSHOT_SCALAR, SNAPSHOT_VECTOR)
     return n;
 }
 
@@ -246,7 +248,7 @@ int run_write_snapshot(run *r)
     char name[64], path[CONFIG_PATH_MAX + 96], err[512];
     snapshot_name(r->n_snapshots, name, sizeof name);
     run_out_path(r, path, sizeof path, name);
-    snapshot_field fields[16];
+    snapshot_field fields[SNAPSHOT_FIELDS_MAX];
     int n_fields = snapshot_fields(s, fields);
     snapshot_attrs attrs = {s->t,     s->step, s->eta_control.eta, DIM,
                             s->dv.dr, s->dv.h, r->case_text};
@@ -267,7 +269,7 @@ int run_write_snapshot(run *r)
 static int rewind_xdmf(run *r)
 {
     if (r->n_snapshots > 0) {
-        snapshot_field fields[16];
+        snapshot_field fields[SNAPSHOT_FIELDS_MAX];
         return write_xdmf(r, fields, snapshot_fields(&r->s, fields));
     }
     char path[CONFIG_PATH_MAX + 96];

@@ -145,9 +145,9 @@ void tank_mirror_step_fields(particles *p, const tank_frame *frame, double c0)
         vec grad_hydro = vec_scale(force, p->rho[i] / (c0 * c0));
         vec dynamic = vec_sub(vec_load(p->grad_rho, i), grad_hydro);
         vec_store(p->grad_rho, g, vec_add(ghost_map_vector(map, dynamic), grad_hydro));
-#define GHOST_COPY(type, name, flags, comment)                                                     \
+#define GHOST_COPY(type, name, flags, snapshot, comment)                                                     \
     if ((flags)&FIELD_GHOST_COPY) p->name[g] = p->name[i];
-#define GHOST_MIRROR(type, name, flags, comment)                                                   \
+#define GHOST_MIRROR(type, name, flags, snapshot, comment)                                                   \
     if ((flags)&FIELD_GHOST_MIRROR)                                                                \
         vec_store(p->name, g, ghost_map_vector(map, vec_load(p->name, i)));
         PARTICLE_FIELDS(GHOST_COPY, GHOST_MIRROR)

@@ -10,61 +10,68 @@
 #include <stdint.h>
 
 /* The field registry: every array of the store, one line each, in the order of the struct.
- * SCALAR(type, name, flags, comment) is one value per particle, VECTOR(...) DIM components.
- * FIELD_STATE marks the persistent state of a fluid particle, reordered with it when the
- * fluid is sorted by cell (particles_permute_fluid); every other field is recomputed from it
+ * SCALAR(type, name, flags, snapshot, comment) is one value per particle, VECTOR(...) DIM
+ * components. FIELD_STATE marks the persistent state of a fluid particle, reordered with it when
+ * the fluid is sorted by cell (particles_permute_fluid); every other field is recomputed from it
  * every step or stage. FIELD_GHOST_COPY and FIELD_GHOST_MIRROR mark the per-step fields that a
  * wall ghost takes from its source once they are computed (tank_mirror_step_fields): as they
  * are (scalars), or mirrored across the ghost's walls (vectors). New slots start as zeros (shifting
  * and lambda are read before anything writes them). Adding a field is one line here: allocation,
  * growth, the bytes of a slot and the reordering follow from the table. */
-enum { FIELD_STATE = 1, FIELD_GHOST_COPY = 2, FIELD_GHOST_MIRROR = 4 };
+enum { FIELD_STATE = 1, FIELD_GHOST_COPY = 2, FIELD_GHOST_MIRROR = 4, FIELD_SURFACE_TENSION = 8 };
 
 #define PARTICLE_FIELDS(SCALAR, VECTOR)                                                            \
     /* state of every particle (ghosts: mirrored from their source each RK stage) */               \
-    SCALAR(int64_t, id, FIELD_STATE, "global id of the fluid particle (a ghost: its source's)")    \
-    VECTOR(double, x, FIELD_STATE, "position, tank frame")                                         \
-    VECTOR(double, u, FIELD_STATE, "velocity, tank frame; ghosts: free-slip image")                \
-    VECTOR(double, u_wall, 0,                                                                      \
+    SCALAR(int64_t, id, FIELD_STATE, "id",                                                         \
+           "global id of the fluid particle (a ghost: its source's)")                              \
+    VECTOR(double, x, FIELD_STATE, "position", "position, tank frame")                             \
+    VECTOR(double, u, FIELD_STATE, "velocity", "velocity, tank frame; ghosts: free-slip image")    \
+    VECTOR(double, u_wall, 0, NULL,                                                                \
            "velocity seen by the viscous term and the velocity gradient: the fluid's own, or "     \
            "the ghost's no-slip / free-slip image")                                                \
-    SCALAR(double, rho, FIELD_STATE, "density")                                                    \
-    SCALAR(double, p, 0, "pressure (EOS)")                                                         \
-    SCALAR(double, m, FIELD_STATE, "mass")                                                         \
-    SCALAR(double, vol, 0, "SPH volume m/rho")                                                     \
+    SCALAR(double, rho, FIELD_STATE, "density", "density")                                         \
+    SCALAR(double, p, 0, "pressure", "pressure (EOS)")                                             \
+    SCALAR(double, m, FIELD_STATE, "mass", "mass")                                                 \
+    SCALAR(double, vol, 0, "volume", "SPH volume m/rho")                                           \
     /* per-step fields, frozen over the RK stages (sec. 2.4); ghosts copy their source's */        \
-    VECTOR(double, grad_rho, 0, "renormalized density gradient <grad rho>^L")                      \
-    SCALAR(double, nu_t, FIELD_GHOST_COPY,                                                         \
+    VECTOR(double, grad_rho, 0, NULL, "renormalized density gradient <grad rho>^L")                \
+    SCALAR(double, nu_t, FIELD_GHOST_COPY, NULL,                                                   \
            "Smagorinsky eddy viscosity with van Driest damping, m^2/s")                            \
-    SCALAR(double, nu_delta, FIELD_GHOST_COPY, "diffusion coefficient nu^delta of Eq. (5), m^2/s") \
-    SCALAR(double, lambda, 0, "smallest eigenvalue of L, Eq. (10) (fluid)")                        \
-    VECTOR(double, normal, 0,                                                                      \
+    SCALAR(double, nu_delta, FIELD_GHOST_COPY, NULL,                                               \
+           "diffusion coefficient nu^delta of Eq. (5), m^2/s")                                     \
+    SCALAR(double, lambda, 0, "lambda", "smallest eigenvalue of L, Eq. (10) (fluid)")              \
+    VECTOR(double, normal, 0, NULL,                                                                \
            "unit normal -L^-1 sum grad W V, out of the fluid (theory §4); in S_F below the free " \
            "surface, the nearest free-surface neighbour's (equidistant ones averaged)")            \
-    SCALAR(double, normal_raw, 0, "|L^-1 sum grad W V| before normalising")                        \
-    SCALAR(double, kernel_sum, 0, "sum_j W_ij, self included: 1 / geometric volume, Eq. (11)")     \
-    SCALAR(double, gamma, 0, "Gamma_i = sum_j W_ij V_j, self included, Eq. (A.2)")                 \
-    SCALAR(double, volume_mismatch, 0,                                                             \
+    SCALAR(double, normal_raw, 0, NULL, "|L^-1 sum grad W V| before normalising")                  \
+    SCALAR(double, kernel_sum, 0, NULL,                                                            \
+           "sum_j W_ij, self included: 1 / geometric volume, Eq. (11)")                            \
+    SCALAR(double, gamma, 0, NULL, "Gamma_i = sum_j W_ij V_j, self included, Eq. (A.2)")           \
+    SCALAR(double, volume_mismatch, 0, NULL,                                                       \
            "e_i = V_i sum_j W_ij / kappa - 1: SPH over geometric volume, with the geometric "      \
            "correction only (volume_correction.h)")                                                \
-    SCALAR(uint8_t, surface, FIELD_GHOST_COPY,                                                     \
+    SCALAR(uint8_t, surface, FIELD_GHOST_COPY, "surface",                                          \
            "0 interior, 1 in S_F, 2 free surface (Marrone et al. 2010)")                           \
-    SCALAR(uint8_t, is_free, 0, "the free-surface test alone, read while `surface` is written")    \
-    SCALAR(double, diff_m, 0, "mass diffusion D^m of Eq. (5) (fluid)")                             \
-    VECTOR(double, shift, FIELD_GHOST_MIRROR, "shifting velocity delta-u, Eq. (7)")                \
-    VECTOR(double, correction, FIELD_GHOST_MIRROR,                                                 \
+    SCALAR(uint8_t, is_free, 0, NULL,                                                              \
+           "the free-surface test alone, read while `surface` is written")                         \
+    SCALAR(double, eps_vi, 0, "eps_vi",                                                            \
+           "the local volume error eps_Vi^(1) of Eq. (12), computed for the snapshots")            \
+    SCALAR(double, diff_m, 0, NULL, "mass diffusion D^m of Eq. (5) (fluid)")                       \
+    VECTOR(double, shift, FIELD_GHOST_MIRROR, "shifting", "shifting velocity delta-u, Eq. (7)")    \
+    VECTOR(double, correction, FIELD_GHOST_MIRROR, NULL,                                           \
            "the geometric volume correction's velocity (zero without it; ghosts: mirrored), "      \
            "scheme/volume_correction.h")                                                           \
-    SCALAR(double, diff_rho, 0, "density diffusion D^rho of Eq. (5) (fluid)")                      \
+    SCALAR(double, diff_rho, 0, NULL, "density diffusion D^rho of Eq. (5) (fluid)")                \
     /* surface tension, with fluid.surface_tension > 0 only (scheme/surface_tension.h) */          \
-    SCALAR(double, interface, 0, "interface function delta_Sigma, 1/m (ghosts: their source's)")   \
-    SCALAR(double, curvature, 0, "kappa, 1/m (fluid)")                                             \
-    VECTOR(double, st_force, 0,                                                                    \
+    SCALAR(double, interface, 0, NULL,                                                             \
+           "interface function delta_Sigma, 1/m (ghosts: their source's)")                         \
+    SCALAR(double, curvature, FIELD_SURFACE_TENSION, "curvature", "kappa, 1/m (fluid)")            \
+    VECTOR(double, st_force, 0, NULL,                                                              \
            "F^st V_i, the surface-tension force on the particle at the current RK stage, N")       \
     /* ghosts only, indexed g - n_fluid */                                                         \
-    SCALAR(uint8_t, ghost_kind, 0, "what the ghost is (ghost_kind): a wall's image")               \
-    SCALAR(int32_t, ghost_source, 0, "fluid index it mirrors")                                     \
-    SCALAR(uint8_t, ghost_map, 0, "its map from the source: an index into ghost_maps")
+    SCALAR(uint8_t, ghost_kind, 0, NULL, "what the ghost is (ghost_kind): a wall's image")         \
+    SCALAR(int32_t, ghost_source, 0, NULL, "fluid index it mirrors")                               \
+    SCALAR(uint8_t, ghost_map, 0, NULL, "its map from the source: an index into ghost_maps")
 
 /* The fields the RK4 integrator advances (scheme/integrate.c), each with its rate d<name>/dt
  * (scheme/rhs.h): the persistent state less the id. */
@@ -84,8 +91,8 @@ typedef struct {
 } ghost_map;
 #define GHOST_MAPS_MAX 64 /* the box: one entry per set of walls, bits 2d (low) and 2d+1 (high) */
 
-#define PARTICLE_SCALAR_MEMBER(type, name, flags, comment) type *name;
-#define PARTICLE_VECTOR_MEMBER(type, name, flags, comment) type *name[DIM];
+#define PARTICLE_SCALAR_MEMBER(type, name, flags, snapshot, comment) type *name;
+#define PARTICLE_VECTOR_MEMBER(type, name, flags, snapshot, comment) type *name[DIM];
 
 typedef struct {
     size_t n_fluid, n_total, capacity;

@@ -12,7 +12,7 @@
 
 /* One bit per field of the registry. */
 enum {
-#define FIELD_BIT_ENUM(type, name, flags, comment) FIELD_BIT_##name,
+#define FIELD_BIT_ENUM(type, name, flags, snapshot, comment) FIELD_BIT_##name,
     PARTICLE_FIELDS(FIELD_BIT_ENUM, FIELD_BIT_ENUM) FIELD_BITS
 };
 _Static_assert(FIELD_BITS <= 64, "the field masks are 64 bits");
