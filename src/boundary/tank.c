@@ -4,21 +4,6 @@
 
 #include <stdint.h>
 
-/* The box's walls as planes n . x = distance, n pointing into the liquid: plane 2d is the low
- * wall of axis d (e_d, 0), plane 2d + 1 the high one (-e_d, -size_d). */
-typedef struct {
-    vec normal;
-    double distance;
-} wall_plane;
-
-static wall_plane box_plane(const tank *t, int k)
-{
-    int d = k / 2, high = k % 2;
-    wall_plane w = {vec_zero(), high ? -t->size[d] : 0.0};
-    w.normal.c[d] = high ? -1.0 : 1.0;
-    return w;
-}
-
 /* The reflection across a plane: a = I - 2 n n^T, b = 2 distance n (exact for the box's
  * axis-aligned planes: a = diag(+-1), b = 0 or 2 size_d). */
 static ghost_map reflection(wall_plane w)
@@ -56,9 +41,9 @@ static void box_ghost_maps(const tank *t, ghost_map maps[GHOST_MAPS_MAX])
     for (unsigned walls = 0; walls < (1u << (2 * DIM)); walls++) {
         ghost_map m = {{{0}}, {0}};
         for (int d = 0; d < DIM; d++) m.a[d][d] = 1.0;
-        for (int k = 0; k < 2 * DIM; k++) {
+        for (int k = 0; k < TANK_PLANES; k++) {
             if (!(walls & (1u << k))) continue;
-            ghost_map r = reflection(box_plane(t, k));
+            ghost_map r = reflection(tank_plane(t, k));
             m = compose(&r, &m);
         }
         maps[walls] = m;
@@ -145,9 +130,9 @@ void tank_mirror_step_fields(particles *p, const tank_frame *frame, double c0)
         vec grad_hydro = vec_scale(force, p->rho[i] / (c0 * c0));
         vec dynamic = vec_sub(vec_load(p->grad_rho, i), grad_hydro);
         vec_store(p->grad_rho, g, vec_add(ghost_map_vector(map, dynamic), grad_hydro));
-#define GHOST_COPY(type, name, flags, snapshot, comment)                                                     \
+#define GHOST_COPY(type, name, flags, snapshot, comment)                                           \
     if ((flags)&FIELD_GHOST_COPY) p->name[g] = p->name[i];
-#define GHOST_MIRROR(type, name, flags, snapshot, comment)                                                   \
+#define GHOST_MIRROR(type, name, flags, snapshot, comment)                                         \
     if ((flags)&FIELD_GHOST_MIRROR)                                                                \
         vec_store(p->name, g, ghost_map_vector(map, vec_load(p->name, i)));
         PARTICLE_FIELDS(GHOST_COPY, GHOST_MIRROR)
@@ -161,8 +146,13 @@ void tank_copy_to_ghosts(const particles *p, double *field)
     for (size_t g = n_fluid; g < p->n_total; g++) field[g] = field[p->ghost_source[g - n_fluid]];
 }
 
-/* Reverses v when it points towards the wall on the `side` (-1: low wall, +1: high wall). */
-static inline double away_from_wall(double v, int side) { return v * side > 0.0 ? -v : v; }
+/* v reflected across the plane when it points at it (v . n < 0), as it is otherwise: the
+ * normal component reversed, the tangential ones kept. */
+static inline vec away_from_wall(vec v, vec n)
+{
+    double vn = vec_dot(v, n);
+    return vn < 0.0 ? vec_axpy(v, -2.0 * vn, n) : v;
+}
 
 size_t tank_bounce_back(const tank *t, particles *p, double dr, double dt)
 {
@@ -170,20 +160,30 @@ size_t tank_bounce_back(const tank *t, particles *p, double dr, double dt)
     size_t bounced = 0;
 #pragma omp parallel for schedule(static) reduction(+ : bounced)
     for (size_t i = 0; i < p->n_fluid; i++) {
-        int hit = 0;
-        for (int d = 0; d < DIM; d++) {
-            double transport = p->u[d][i] + p->shift[d][i] + p->correction[d][i];
-            double ahead = p->x[d][i] + transport * dt;
-            int side = ahead < near && transport < 0.0                ? -1
-                       : t->size[d] - ahead < near && transport > 0.0 ? 1
-                                                                      : 0;
-            if (!side) continue;
-            p->u[d][i] = away_from_wall(p->u[d][i], side);
-            p->shift[d][i] = away_from_wall(p->shift[d][i], side);
-            p->correction[d][i] = away_from_wall(p->correction[d][i], side);
-            hit = 1;
+        vec u = vec_load(p->u, i), shift = vec_load(p->shift, i), dv = vec_load(p->correction, i);
+        vec transport = vec_add(vec_add(u, shift), dv);
+        vec ahead = vec_axpy(vec_load(p->x, i), dt, transport);
+        /* the walls it reaches, all judged from the velocities before any reversal; of two
+           opposite walls (a tank thinner than dr/4) the first */
+        unsigned hit = 0;
+        for (int k = 0; k < TANK_PLANES; k++) {
+            wall_plane w = tank_plane(t, k);
+            if (k % 2 && (hit & (1u << (k - 1)))) continue;
+            if (vec_dot(w.normal, ahead) - w.distance < near && vec_dot(w.normal, transport) < 0.0)
+                hit |= 1u << k;
         }
-        bounced += (size_t)hit;
+        if (!hit) continue;
+        for (int k = 0; k < TANK_PLANES; k++) {
+            if (!(hit & (1u << k))) continue;
+            vec n = tank_plane(t, k).normal;
+            u = away_from_wall(u, n);
+            shift = away_from_wall(shift, n);
+            dv = away_from_wall(dv, n);
+        }
+        vec_store(p->u, i, u);
+        vec_store(p->shift, i, shift);
+        vec_store(p->correction, i, dv);
+        bounced++;
     }
     return bounced;
 }

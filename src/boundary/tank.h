@@ -53,16 +53,35 @@ void tank_copy_to_ghosts(const particles *p, double *field);
  * bounced. */
 size_t tank_bounce_back(const tank *t, particles *p, double dr, double dt);
 
-/* Distance to the nearest wall plane (sec. 2.5) and its axis. */
-static inline double tank_wall_distance(const tank *t, vec x, int *axis)
+/* The walls as planes n . x = distance, n pointing into the liquid. The box's: plane 2d is the
+ * low wall of axis d (e_d, 0), plane 2d + 1 the high one (-e_d, -size_d). Wall distance,
+ * bounce-back and the ghosts' maps loop over these; a wall that is not a box face is another
+ * plane. */
+#define TANK_PLANES (2 * DIM)
+
+typedef struct {
+    vec normal;
+    double distance;
+} wall_plane;
+
+static inline wall_plane tank_plane(const tank *t, int k)
+{
+    int d = k / 2, high = k % 2;
+    wall_plane w = {vec_zero(), high ? -t->size[d] : 0.0};
+    w.normal.c[d] = high ? -1.0 : 1.0;
+    return w;
+}
+
+/* Distance to the nearest wall (sec. 2.5) and that wall's normal (into the liquid). */
+static inline double tank_wall_distance(const tank *t, vec x, vec *normal)
 {
     double best = INFINITY;
-    for (int d = 0; d < DIM; d++) {
-        double lo = x.c[d], hi = t->size[d] - x.c[d];
-        double m = lo < hi ? lo : hi;
+    for (int k = 0; k < TANK_PLANES; k++) {
+        wall_plane w = tank_plane(t, k);
+        double m = vec_dot(w.normal, x) - w.distance;
         if (m < best) {
             best = m;
-            *axis = d;
+            *normal = w.normal;
         }
     }
     return best;

@@ -76,10 +76,9 @@ static void geometry_and_gradients(const physics_params *pp, const tank *t, part
         p->nu_delta[i] = diffusion_coefficient(pp->c_delta, pp->filter_length, dnorm);
         double damping = 1.0;
         if (pp->van_driest) {
-            int axis = 0;
-            double y = tank_wall_distance(t, xi, &axis);
-            vec tangential = ui;
-            tangential.c[axis] = 0.0;
+            vec n = vec_zero();
+            double y = tank_wall_distance(t, xi, &n);
+            vec tangential = vec_axpy(ui, -vec_dot(ui, n), n);
             damping = van_driest_factor(y, vec_norm(tangential), pp->nu);
         }
         p->nu_t[i] = pp->les ? eddy_viscosity(pp->filter_length, damping, dnorm) : 0.0;
