@@ -33,15 +33,22 @@ static void test_full_disk_is_reported(void **state)
     csv_close(&c);
 }
 
-static void test_rows_written_without_error(void **state)
+/* A CSV file with `header` at a new temporary path made from the template `path`. */
+static csv_file open_temporary(char *path, const char *header)
 {
-    (void)state;
-    char path[] = "/tmp/vcsph-csv-XXXXXX";
     int fd = mkstemp(path);
     assert_true(fd >= 0);
     close(fd);
     csv_file c = {0};
-    assert_int_equal(csv_open(&c, path, "t,x"), 0);
+    assert_int_equal(csv_open(&c, path, header), 0);
+    return c;
+}
+
+static void test_rows_written_without_error(void **state)
+{
+    (void)state;
+    char path[] = "/tmp/vcsph-csv-XXXXXX";
+    csv_file c = open_temporary(path, "t,x");
     csv_put(&c, 0.5);
     csv_put_long(&c, 3);
     csv_end_row(&c);
@@ -57,11 +64,7 @@ static void test_reader_reads_what_the_writer_wrote(void **state)
 {
     (void)state;
     char path[] = "/tmp/vcsph-csv-XXXXXX";
-    int fd = mkstemp(path);
-    assert_true(fd >= 0);
-    close(fd);
-    csv_file c = {0};
-    assert_int_equal(csv_open(&c, path, "t,event,detail"), 0);
+    csv_file c = open_temporary(path, "t,event,detail");
     csv_put(&c, 0.25);
     csv_put_text(&c, "eta_switch");
     csv_put_text(&c, "eta 0 -> 1, at \"+1 %\"\nnow");
