@@ -1,8 +1,11 @@
 /* The body force of the tank frame (boundary/frame.h, theory §6): for a translating tank it is
  * g - a0 at every position and velocity, the g_eff of the translating motions; for a rotating
- * one each of the Euler, centrifugal and Coriolis terms against its closed form about z:
- *   -dOmega/dt x r = dW (y, -x),  -Omega x (Omega x r) = W^2 (x, y),  -2 Omega x u = 2 W (u_y, -u_x)
- * for Omega = (0, 0, W). The motions of today feed the translating case through motion_frame. */
+ * one each of the Euler, centrifugal and Coriolis terms against its closed form about z, for
+ * Omega = (0, 0, W):
+ *   -dOmega/dt x r = dW (y, -x),
+ *   -Omega x (Omega x r) = W^2 (x, y),
+ *   -2 Omega x u = 2 W (u_y, -u_x).
+ * The motions of today feed the translating case through motion_frame. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>

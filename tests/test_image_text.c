@@ -142,7 +142,8 @@ static void test_axes_and_percent_bar(void **state)
     f.vmax = 0.02;
     image_layout l = layout_of(&f, WIDE);
     png_rgb img = write_and_read(fx, "axes.png", &f, WIDE);
-    uint32_t x = 0, y = 0, right = l.tank_left + l.tank_width - 1, bottom = l.tank_top + l.tank_height - 1;
+    uint32_t x = 0, y = 0, right = l.tank_left + l.tank_width - 1,
+             bottom = l.tank_top + l.tank_height - 1;
 
     /* x: "0.4" centred on its mark at column tank_left + 160, under the outline */
     uint32_t col = l.tank_left + 160;

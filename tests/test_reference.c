@@ -4,12 +4,12 @@
  * code's structure (docs/architecture.md) must not change a result; this test is what says so.
  *
  * Each reference holds the run's CSV files verbatim (timeseries, events, dissipation,
- * probes), the XDMF index of the snapshots, and, for every snapshot, one line per dataset and attribute with its type, length
- * and a 64-bit FNV-1a hash of its bytes (h5_digest.h; the snapshots themselves would weigh
- * megabytes). Left out: the version attribute, log.txt (wall times), images (the PNG encoder's
- * bytes depend on the zlib build), and the checkpoint, whose exactness is test_restart's and
- * which the restart run here reads back. The runs go through the vcsph binary, so the test
- * does not depend on the code's internal interfaces.
+ * probes), the XDMF index of the snapshots, and, for every snapshot, one line per dataset and
+ * attribute with its type, length and a 64-bit FNV-1a hash of its bytes (h5_digest.h; the snapshots
+ * themselves would weigh megabytes). Left out: the version attribute, log.txt (wall times), images
+ * (the PNG encoder's bytes depend on the zlib build), and the checkpoint, whose exactness is
+ * test_restart's and which the restart run here reads back. The runs go through the vcsph binary,
+ * so the test does not depend on the code's internal interfaces.
  *
  * A change of results that is meant (a physics fix) writes the references again:
  *   VCSPH_WRITE_REFERENCE=1 build/tests/test_reference

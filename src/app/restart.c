@@ -61,7 +61,7 @@
  * and per component of a vector field ("x_0", "x_1", ...), int64 or float64. */
 #define STATE_ITEM_TYPE(type)                                                                      \
     _Generic((type *)0, int64_t * : CHECKPOINT_I64, double * : CHECKPOINT_F64, default : -1)
-#define STATE_ITEM_CHECK(type, name, flags, snapshot, comment)                                               \
+#define STATE_ITEM_CHECK(type, name, flags, snapshot, comment)                                     \
     _Static_assert(!((flags)&FIELD_STATE) || STATE_ITEM_TYPE(type) >= 0, #name);
 PARTICLE_FIELDS(STATE_ITEM_CHECK, STATE_ITEM_CHECK)
 #define COMPONENT_NAME(name, d) ((const char *const[3]){#name "_0", #name "_1", #name "_2"}[d])
@@ -109,9 +109,9 @@ static void f64_groups(run *r, f64_group g[F64_GROUPS])
 static void add_particles(item_list *l, const particles *p)
 {
     size_t n = p->n_fluid;
-#define ADD_SCALAR(type, name, flags, snapshot, comment)                                                     \
+#define ADD_SCALAR(type, name, flags, snapshot, comment)                                           \
     if ((flags)&FIELD_STATE) add(l, #name, STATE_ITEM_TYPE(type), n, p->name, NULL);
-#define ADD_VECTOR(type, name, flags, snapshot, comment)                                                     \
+#define ADD_VECTOR(type, name, flags, snapshot, comment)                                           \
     if ((flags)&FIELD_STATE)                                                                       \
         for (int d = 0; d < DIM; d++)                                                              \
             add(l, COMPONENT_NAME(name, d), STATE_ITEM_TYPE(type), n, p->name[d], NULL);
@@ -226,10 +226,10 @@ static int load_particles(solver *s, const checkpoint_data *cd, char *err, size_
     s->step = head[2];
     s->n_edbc = head[3];
     int rc = 0;
-#define TAKE_SCALAR(type, name, flags, snapshot, comment)                                                    \
+#define TAKE_SCALAR(type, name, flags, snapshot, comment)                                          \
     if ((flags)&FIELD_STATE && rc == 0)                                                            \
         rc = take(cd, #name, STATE_ITEM_TYPE(type), n, NULL, p->name, err, err_len);
-#define TAKE_VECTOR(type, name, flags, snapshot, comment)                                                    \
+#define TAKE_VECTOR(type, name, flags, snapshot, comment)                                          \
     for (int d = 0; d < DIM && (flags)&FIELD_STATE && rc == 0; d++)                                \
         rc = take(cd, COMPONENT_NAME(name, d), STATE_ITEM_TYPE(type), n, NULL, p->name[d], err,    \
                   err_len);

@@ -18,9 +18,9 @@ int particles_reserve(particles *p, size_t capacity)
 {
     if (capacity <= p->capacity) return 0;
     size_t old = p->capacity;
-#define GROW_SCALAR(type, name, flags, snapshot, comment)                                                    \
+#define GROW_SCALAR(type, name, flags, snapshot, comment)                                          \
     if (grow((void **)&p->name, old, capacity, sizeof(type))) return -1;
-#define GROW_VECTOR(type, name, flags, snapshot, comment)                                                    \
+#define GROW_VECTOR(type, name, flags, snapshot, comment)                                          \
     for (int d = 0; d < DIM; d++)                                                                  \
         if (grow((void **)&p->name[d], old, capacity, sizeof(type))) return -1;
     PARTICLE_FIELDS(GROW_SCALAR, GROW_VECTOR)
@@ -37,7 +37,7 @@ int particles_init(particles *p, size_t capacity)
 void particles_free(particles *p)
 {
 #define FREE_SCALAR(type, name, flags, snapshot, comment) free(p->name);
-#define FREE_VECTOR(type, name, flags, snapshot, comment)                                                    \
+#define FREE_VECTOR(type, name, flags, snapshot, comment)                                          \
     for (int d = 0; d < DIM; d++) free(p->name[d]);
     PARTICLE_FIELDS(FREE_SCALAR, FREE_VECTOR)
     memset(p, 0, sizeof *p);
@@ -51,14 +51,14 @@ size_t particles_bytes_per_slot(void)
 }
 
 /* The state is reordered through a scratch array of doubles. */
-#define FITS_SCALAR(type, name, flags, snapshot, comment)                                                    \
+#define FITS_SCALAR(type, name, flags, snapshot, comment)                                          \
     _Static_assert(!((flags)&FIELD_STATE) || sizeof(type) <= sizeof(double), #name);
 #define FITS_VECTOR FITS_SCALAR
 PARTICLE_FIELDS(FITS_SCALAR, FITS_VECTOR)
 /* A ghost mirrors vectors and copies scalars. */
-#define GHOST_RULE_SCALAR(type, name, flags, snapshot, comment)                                              \
+#define GHOST_RULE_SCALAR(type, name, flags, snapshot, comment)                                    \
     _Static_assert(!((flags)&FIELD_GHOST_MIRROR), #name " is a scalar: copy it");
-#define GHOST_RULE_VECTOR(type, name, flags, snapshot, comment)                                              \
+#define GHOST_RULE_VECTOR(type, name, flags, snapshot, comment)                                    \
     _Static_assert(!((flags)&FIELD_GHOST_COPY), #name " is a vector: mirror it");
 PARTICLE_FIELDS(GHOST_RULE_SCALAR, GHOST_RULE_VECTOR)
 
@@ -73,9 +73,9 @@ static void permute(void *a, size_t size, const size_t *order, size_t n, double 
 void particles_permute_fluid(particles *p, const size_t *order, double *scratch)
 {
     size_t n = p->n_fluid;
-#define PERMUTE_SCALAR(type, name, flags, snapshot, comment)                                                 \
+#define PERMUTE_SCALAR(type, name, flags, snapshot, comment)                                       \
     if ((flags)&FIELD_STATE) permute(p->name, sizeof(type), order, n, scratch);
-#define PERMUTE_VECTOR(type, name, flags, snapshot, comment)                                                 \
+#define PERMUTE_VECTOR(type, name, flags, snapshot, comment)                                       \
     if ((flags)&FIELD_STATE)                                                                       \
         for (int d = 0; d < DIM; d++) permute(p->name[d], sizeof(type), order, n, scratch);
     PARTICLE_FIELDS(PERMUTE_SCALAR, PERMUTE_VECTOR)
