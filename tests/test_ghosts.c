@@ -14,11 +14,8 @@ static const double rho0 = 1000.0, c0 = 20.0, reach = 0.1;
 
 static tank make_tank(void)
 {
-    tank t;
     double size[3] = {1.0, 0.8, 0.6};
-    for (int d = 0; d < DIM; d++) t.size[d] = size[d];
-    t.wall = WALL_NO_SLIP;
-    return t;
+    return tank_box(size, WALL_NO_SLIP);
 }
 
 static void add(particles *p, const double x[3])

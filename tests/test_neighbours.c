@@ -38,9 +38,7 @@ static void check_against_brute_force(size_t n, double radius)
     particles p;
     assert_int_equal(particles_init(&p, n), 0);
     scatter(&p, n, 7);
-    tank t;
-    for (int d = 0; d < DIM; d++) t.size[d] = 1.0;
-    t.wall = WALL_NO_SLIP;
+    tank t = tank_box((const double[3]){1.0, 1.0, 1.0}, WALL_NO_SLIP);
     assert_int_equal(tank_make_ghosts(&t, &p, radius), 0);
     for (size_t g = p.n_fluid; g < p.n_total; g++) {
         size_t i = (size_t)p.ghost_source[g - p.n_fluid];

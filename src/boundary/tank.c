@@ -4,6 +4,19 @@
 
 #include <stdint.h>
 
+tank tank_box(const double size[DIM], wall_kind wall)
+{
+    tank t = {.wall = wall};
+    for (int d = 0; d < DIM; d++) {
+        t.size[d] = size[d];
+        t.planes[2 * d] = (wall_plane){vec_zero(), 0.0};
+        t.planes[2 * d].normal.c[d] = 1.0;
+        t.planes[2 * d + 1] = (wall_plane){vec_zero(), -size[d]};
+        t.planes[2 * d + 1].normal.c[d] = -1.0;
+    }
+    return t;
+}
+
 /* The reflection across a plane: a = I - 2 n n^T, b = 2 distance n (exact for the box's
  * axis-aligned planes: a = diag(+-1), b = 0 or 2 size_d). */
 static ghost_map reflection(wall_plane w)

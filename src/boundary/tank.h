@@ -8,10 +8,30 @@
 #include "core/particles.h"
 #include "core/vec.h"
 
+/* A wall: the plane n . x = distance, n pointing into the liquid. */
+typedef struct {
+    vec normal;
+    double distance;
+} wall_plane;
+
+/* The walls' planes. The box's: plane 2d is the low wall of axis d (e_d, 0), plane 2d + 1 the
+ * high one (-e_d, -size_d); wall distance, bounce-back and the ghosts' maps loop over them, so a
+ * wall that is not a box face is one more plane (the ghost list of tank_make_ghosts is still
+ * the box's: images across the walls of each axis and their edges and corners). */
+#define TANK_PLANES (2 * DIM)
+
 typedef struct {
     double size[DIM]; /* L, D[, W]: walls at x_d = 0 and x_d = size[d] */
     wall_kind wall;
+    wall_plane planes[TANK_PLANES];
 } tank;
+
+#define tank_box DIM_NAME(tank_box)
+
+/* The rectangular tank of inner size `size` with its walls' planes. */
+tank tank_box(const double size[DIM], wall_kind wall);
+
+static inline wall_plane tank_plane(const tank *t, int k) { return t->planes[k]; }
 
 #define tank_make_ghosts        DIM_NAME(tank_make_ghosts)
 #define tank_refresh_ghosts     DIM_NAME(tank_refresh_ghosts)
@@ -52,25 +72,6 @@ void tank_copy_to_ghosts(const particles *p, double *field);
  * where du may carry a particle into the wall that u takes away from it. Returns the particles
  * bounced. */
 size_t tank_bounce_back(const tank *t, particles *p, double dr, double dt);
-
-/* The walls as planes n . x = distance, n pointing into the liquid. The box's: plane 2d is the
- * low wall of axis d (e_d, 0), plane 2d + 1 the high one (-e_d, -size_d). Wall distance,
- * bounce-back and the ghosts' maps loop over these; a wall that is not a box face is another
- * plane. */
-#define TANK_PLANES (2 * DIM)
-
-typedef struct {
-    vec normal;
-    double distance;
-} wall_plane;
-
-static inline wall_plane tank_plane(const tank *t, int k)
-{
-    int d = k / 2, high = k % 2;
-    wall_plane w = {vec_zero(), high ? -t->size[d] : 0.0};
-    w.normal.c[d] = high ? -1.0 : 1.0;
-    return w;
-}
 
 /* Distance to the nearest wall (sec. 2.5) and that wall's normal (into the liquid). */
 static inline double tank_wall_distance(const tank *t, vec x, vec *normal)

@@ -72,8 +72,7 @@ int solver_init(solver *s, const config *cfg, char *err, size_t err_len)
         return status;
     }
     double size[3] = {cfg->tank_length, cfg->tank_height, cfg->tank_width};
-    for (int d = 0; d < DIM; d++) s->tank.size[d] = size[d];
-    s->tank.wall = cfg->wall;
+    s->tank = tank_box(size, cfg->wall);
     physics_setup(s);
     if (particles_init(&s->p, 0) || lattice_fill(&s->p, cfg, &s->dv) || alloc_work(s)) {
         snprintf(err, err_len, "out of memory for %ld particles", s->dv.n_fluid);
