@@ -193,8 +193,6 @@ enum { SNAPSHOT_FIELDS_MAX = 0 PARTICLE_FIELDS(COUNT_FIELD, COUNT_FIELD) };
 static int snapshot_fields(solver *s, snapshot_field *f)
 {
     particles *p = &s->p;
-    for (size_t i = 0; i < p->n_fluid; i++)
-        p->eps_vi[i] = volume_local_error(p, i, s->dv.cell_volume);
     int n = 0;
 #define WRITTEN(flags, snapshot)                                                                   \
     ((snapshot) != NULL && (s->pp.surface_tension || !((flags)&FIELD_SURFACE_TENSION)))
@@ -248,6 +246,8 @@ int run_write_snapshot(run *r)
     char name[64], path[CONFIG_PATH_MAX + 96], err[512];
     snapshot_name(r->n_snapshots, name, sizeof name);
     run_out_path(r, path, sizeof path, name);
+    for (size_t i = 0; i < s->p.n_fluid; i++) /* the only field computed for the snapshots */
+        s->p.eps_vi[i] = volume_local_error(&s->p, i, s->dv.cell_volume);
     snapshot_field fields[SNAPSHOT_FIELDS_MAX];
     int n_fields = snapshot_fields(s, fields);
     snapshot_attrs attrs = {s->t,     s->step, s->eta_control.eta, DIM,

@@ -4,19 +4,6 @@
 
 #include <stdint.h>
 
-tank tank_box(const double size[DIM], wall_kind wall)
-{
-    tank t = {.wall = wall};
-    for (int d = 0; d < DIM; d++) {
-        t.size[d] = size[d];
-        t.planes[2 * d] = (wall_plane){vec_zero(), 0.0};
-        t.planes[2 * d].normal.c[d] = 1.0;
-        t.planes[2 * d + 1] = (wall_plane){vec_zero(), -size[d]};
-        t.planes[2 * d + 1].normal.c[d] = -1.0;
-    }
-    return t;
-}
-
 /* The reflection across a plane: a = I - 2 n n^T, b = 2 distance n (exact for the box's
  * axis-aligned planes: a = diag(+-1), b = 0 or 2 size_d). */
 static ghost_map reflection(wall_plane w)
@@ -49,7 +36,7 @@ static ghost_map compose(const ghost_map *outer, const ghost_map *inner)
 
 /* Entry `walls` of the table is the product of the reflections across the planes whose bits
  * are set: one wall, an edge (two) or a corner (three). */
-static void box_ghost_maps(const tank *t, ghost_map maps[GHOST_MAPS_MAX])
+static void box_ghost_maps(tank *t)
 {
     for (unsigned walls = 0; walls < (1u << (2 * DIM)); walls++) {
         ghost_map m = {{{0}}, {0}};
@@ -59,13 +46,27 @@ static void box_ghost_maps(const tank *t, ghost_map maps[GHOST_MAPS_MAX])
             ghost_map r = reflection(tank_plane(t, k));
             m = compose(&r, &m);
         }
-        maps[walls] = m;
+        t->maps[walls] = m;
     }
+}
+
+tank tank_box(const double size[DIM], wall_kind wall)
+{
+    tank t = {.wall = wall};
+    for (int d = 0; d < DIM; d++) {
+        t.size[d] = size[d];
+        t.planes[2 * d] = (wall_plane){vec_zero(), 0.0};
+        t.planes[2 * d].normal.c[d] = 1.0;
+        t.planes[2 * d + 1] = (wall_plane){vec_zero(), -size[d]};
+        t.planes[2 * d + 1].normal.c[d] = -1.0;
+    }
+    box_ghost_maps(&t);
+    return t;
 }
 
 int tank_make_ghosts(const tank *t, particles *p, double reach)
 {
-    box_ghost_maps(t, p->ghost_maps);
+    p->ghost_maps = t->maps;
     size_t n_fluid = p->n_fluid, g = n_fluid;
     /* serial and in fluid order: the ghost list is the same for any thread count */
     for (size_t i = 0; i < n_fluid; i++) {
@@ -176,12 +177,12 @@ size_t tank_bounce_back(const tank *t, particles *p, double dr, double dt)
         vec u = vec_load(p->u, i), shift = vec_load(p->shift, i), dv = vec_load(p->correction, i);
         vec transport = vec_add(vec_add(u, shift), dv);
         vec ahead = vec_axpy(vec_load(p->x, i), dt, transport);
-        /* the walls it reaches, all judged from the velocities before any reversal; of two
-           opposite walls (a tank thinner than dr/4) the first */
+        /* the walls it reaches, all judged from the velocities before any reversal (two
+           opposite walls cannot both be within dr/4: the tank holds at least two particles
+           across, derived_check) */
         unsigned hit = 0;
         for (int k = 0; k < TANK_PLANES; k++) {
             wall_plane w = tank_plane(t, k);
-            if (k % 2 && (hit & (1u << (k - 1)))) continue;
             if (vec_dot(w.normal, ahead) - w.distance < near && vec_dot(w.normal, transport) < 0.0)
                 hit |= 1u << k;
         }

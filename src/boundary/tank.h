@@ -24,11 +24,12 @@ typedef struct {
     double size[DIM]; /* L, D[, W]: walls at x_d = 0 and x_d = size[d] */
     wall_kind wall;
     wall_plane planes[TANK_PLANES];
+    ghost_map maps[GHOST_MAPS_MAX]; /* the ghosts' maps, entry `walls` (tank_make_ghosts) */
 } tank;
 
 #define tank_box DIM_NAME(tank_box)
 
-/* The rectangular tank of inner size `size` with its walls' planes. */
+/* The rectangular tank of inner size `size` with its walls' planes and the ghosts' maps. */
 tank tank_box(const double size[DIM], wall_kind wall);
 
 static inline wall_plane tank_plane(const tank *t, int k) { return t->planes[k]; }

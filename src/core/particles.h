@@ -83,8 +83,9 @@ enum { FIELD_STATE = 1, FIELD_GHOST_COPY = 2, FIELD_GHOST_MIRROR = 4, FIELD_SURF
 
 /* A ghost's affine map from its source: position x_g = a x_i + b, a vector v_g = a v_i (a wall's
  * image: a reflection, or the product of the reflections of an edge or a corner; a halo copy:
- * the identity or a period's translation). The provider that makes the ghosts (the tank's
- * walls, boundary/tank.c) fills the table; each ghost names its entry. */
+ * the identity or a period's translation). The provider that makes the ghosts owns the table
+ * (the tank's walls: boundary/tank.c, computed once from its planes) and points the store at
+ * it; each ghost names its entry. */
 typedef struct {
     double a[DIM][DIM];
     double b[DIM];
@@ -97,7 +98,7 @@ typedef struct {
 typedef struct {
     size_t n_fluid, n_total, capacity;
     PARTICLE_FIELDS(PARTICLE_SCALAR_MEMBER, PARTICLE_VECTOR_MEMBER)
-    ghost_map ghost_maps[GHOST_MAPS_MAX];
+    const ghost_map *ghost_maps; /* the table of the provider that made the ghosts */
 } particles;
 
 /* What a particle of the tail [n_fluid, n_total) stands for. A loop that treats walls apart

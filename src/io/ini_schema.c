@@ -531,7 +531,6 @@ void ini_write_keys(const ini_schema *schema, FILE *out)
 void *ini_target(const ini_session *ctx) { return ctx->target; }
 void *ini_user(const ini_session *ctx) { return ctx->user; }
 const char *ini_path(const ini_session *ctx) { return ctx->path; }
-bool ini_failed(const ini_session *ctx) { return ctx->failed; }
 int ini_key_line(const ini_session *ctx, const ini_key *k)
 {
     return ctx->key_line[k - ctx->schema->keys];

@@ -102,7 +102,6 @@ void *ini_target(const ini_session *ctx);
 void *ini_user(const ini_session *ctx);
 /* the file being read, NULL for a string */
 const char *ini_path(const ini_session *ctx);
-bool ini_failed(const ini_session *ctx);
 /* The key (section, name) of the schema; one that does not exist is a bug (abort). */
 const ini_key *ini_key_of(const ini_session *ctx, const char *section, const char *name);
 /* Whether the file or --set gave the key (rather than its default). */

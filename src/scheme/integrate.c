@@ -2,12 +2,8 @@
  * surface-tension force is taken again at every stage (scheme/surface_tension.h). */
 #include "boundary/tank.h"
 #include "core/reduce.h"
-#include "diag/volume.h"
-#include "scheme/control.h"
-#include "scheme/fields.h"
 #include "scheme/passes.h"
 #include "scheme/solver.h"
-#include "scheme/volume_correction.h"
 
 #include <string.h>
 
@@ -27,7 +23,7 @@ static double time_step(const solver *s)
 /* Sorts the fluid by cell, makes the ghosts and lists the neighbours within 2h + skin, where
  * the skin covers the relative motion of two particles during the step: pairs beyond 2h add
  * exactly zero, so the results do not depend on the skin as long as it is wide enough. */
-static int build_neighbours(solver *s, double dt)
+static int build_neighbours(solver *s, double dt, const tank_frame *frame)
 {
     particles *p = &s->p;
     double bound = dt * (fluid_max_speed(&s->p, s->scratch) + dt * s->max_acc);
@@ -46,8 +42,7 @@ static int build_neighbours(solver *s, double dt)
     particles_permute_fluid(p, s->order, s->scratch);
     if (tank_make_ghosts(&s->tank, p, cutoff)) return -1;
     solver_update_eos(s);
-    tank_frame frame = solver_frame(s, s->t);
-    tank_refresh_ghosts(&s->tank, p, &frame, s->pp.rho0, s->pp.c0);
+    tank_refresh_ghosts(&s->tank, p, frame, s->pp.rho0, s->pp.c0);
     if (cells_bin(&s->grid, p->x, p->n_total)) return -1;
     return neighbours_build(&s->nl, &s->grid, p->x, p->n_fluid, cutoff);
 }
@@ -105,8 +100,9 @@ int solver_prepare(solver *s, double t_stop)
     double dt = time_step(s);
     if (s->t + dt > t_stop) dt = t_stop - s->t;
     s->dt = dt;
-    if (build_neighbours(s, dt)) return -1;
-    return passes_prepare(s);
+    tank_frame frame = solver_frame(s, s->t);
+    if (build_neighbours(s, dt, &frame)) return -1;
+    return passes_prepare(s, &frame);
 }
 
 void solver_advance(solver *s, double t_stop)

@@ -123,19 +123,18 @@ static const step_pass prepare_passes[] = {
      F(interface) | F(curvature) | F(st_force), has_surface_tension, surface_tension},
 };
 
-int passes_prepare(solver *s)
+int passes_prepare(solver *s, const tank_frame *frame)
 {
-    tank_frame frame = solver_frame(s, s->t);
     s->eta_switched = 0;
     uint64_t stale = 0; /* fields changed since the ghosts were last refreshed */
     for (size_t k = 0; k < sizeof prepare_passes / sizeof prepare_passes[0]; k++) {
         const step_pass *pass = &prepare_passes[k];
         if (pass->active && !pass->active(s)) continue;
         if (stale & pass->reads) {
-            tank_refresh_ghosts(&s->tank, &s->p, &frame, s->pp.rho0, s->pp.c0);
+            tank_refresh_ghosts(&s->tank, &s->p, frame, s->pp.rho0, s->pp.c0);
             stale = 0;
         }
-        long changed = pass->run(s, &frame);
+        long changed = pass->run(s, frame);
         if (changed < 0) return -1;
         if (changed > 0) stale |= pass->writes & GHOST_STATE;
     }

@@ -10,7 +10,8 @@
 
 /* The geometry and free surface, the eta control, EdBC, the shifting, the volume correction,
  * bounce-back, the frozen terms and the surface-tension force of stage 0, for the state at
- * s->t on the neighbour lists just built. Returns 0, or -1 when out of memory. */
-int passes_prepare(solver *s);
+ * s->t on the neighbour lists just built, in the tank frame of s->t. Returns 0, or -1 when out
+ * of memory. */
+int passes_prepare(solver *s, const tank_frame *frame);
 
 #endif
