@@ -112,6 +112,9 @@ static void test_full_file(void **state)
     assert_true(c.pressure_probes[0][0] == 0.0 && c.pressure_probes[0][1] == 0.1);
     assert_true(c.pressure_probes[0][2] == 0.15 && c.pressure_probes[1][0] == 1.2);
     assert_true(c.pressure_probes[1][1] == 0.2 && c.pressure_probes[1][2] == 0.15);
+    /* the first is a sensor of 1 cm on the wall x = 0, the second a point on x = L */
+    assert_true(c.pressure_probes[0][3] == 0.01 && c.pressure_probes[1][3] == 0.0);
+    assert_int_equal(config_wall_axis(&c, c.pressure_probes[0]), 0);
     assert_string_equal(c.output_dir, "results/full-test-run");
     assert_true(c.timeseries_every == 0.01 && c.snapshot_every == 0.5);
     assert_true(c.image_every == 0.25 && c.checkpoint_every == 0.0);

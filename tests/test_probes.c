@@ -3,7 +3,9 @@
  * liquid volume over the column, H up to the hydrostatic compression g H / (2 c0^2) ~ 0.5 %),
  * and a pressure probe at depth d reads rho0 g d within 3 % (the Shepard interpolation is
  * exact for the linear hydrostatic field; the rest is the settling of the lattice). Probes in
- * the middle and on a side wall (where the ghosts complete the kernel). */
+ * the middle and on a side wall (where the ghosts complete the kernel), and a sensor of 8 cm
+ * on the side wall, whose mean over its face of the linear field is the value at its centre
+ * (the quadrature's own check: test_sensor). */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -27,18 +29,18 @@ static void check_still_tank(int dim, int resolution)
              "[model]\nscheme = delta-plus-ale\n"
              "[numerics]\nresolution = %d\nsound_speed = 20.0\n"
              "[probes]\ngauges = 0.0, 0.3, 0.5, 1.0\n"
-             "pressure = 0.5 0.175%s; 0.0 0.1%s; 0.31 0.05%s\n"
+             "pressure = 0.5 0.175%s; 0.0 0.1%s; 0.31 0.05%s; 0.0 0.1%s d=0.08\n"
              "[output]\ntimeseries_every = 0.05\n",
-             dim, DEPTH_H, resolution, z, z, z);
+             dim, DEPTH_H, resolution, z, z, z, z);
     char dir[64], path[128];
     table ts, pr;
     run_case_text(text, NULL, 0, dir, &ts);
     snprintf(path, sizeof path, "%s/probes.csv", dir);
     assert_int_equal(table_read(&pr, path), 0);
     assert_int_equal(pr.n_rows, ts.n_rows); /* one row per time-series row */
-    assert_int_equal(pr.n_columns, 1 + 4 + 3);
+    assert_int_equal(pr.n_columns, 1 + 4 + 4);
     double dr = DEPTH_H / resolution, g = 9.81, rho0 = 1000.0;
-    const double probe_y[3] = {0.175, 0.1, 0.05};
+    const double probe_y[4] = {0.175, 0.1, 0.05, 0.1};
     for (size_t row = 0; row < pr.n_rows; row += pr.n_rows - 1) {
         printf("%dD, t = %g s:", dim, pr.column[0][row]);
         for (int k = 1; k <= 4; k++) {
@@ -46,7 +48,7 @@ static void check_still_tank(int dim, int resolution)
             printf(" gauge %.5f m (H %+.2f dr)", gauge, (gauge - DEPTH_H) / dr);
             assert_close(gauge, DEPTH_H, 0.25 * dr);
         }
-        for (int k = 0; k < 3; k++) {
+        for (int k = 0; k < 4; k++) {
             double p = pr.column[5 + k][row], expected = rho0 * g * (DEPTH_H - probe_y[k]);
             printf(" p %.1f Pa (%+.2f %%)", p, 100.0 * (p / expected - 1.0));
             assert_close(p / expected, 1.0, 0.03);

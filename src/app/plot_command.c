@@ -334,13 +334,15 @@ static void probe_title(const plot_inputs *in, const char *column, char *buf, si
     const config *c = &in->cfg;
     if (in->has_case && gauge && k >= 1 && k <= c->n_gauges)
         snprintf(buf, size, "gauge %d: x = %g m", k, c->gauges[k - 1]);
-    else if (in->has_case && pressure && k >= 1 && k <= c->n_pressure_probes && c->dim == 2)
-        snprintf(buf, size, "p %d: (x, y) = (%g, %g) m", k, c->pressure_probes[k - 1][0],
-                 c->pressure_probes[k - 1][1]);
-    else if (in->has_case && pressure && k >= 1 && k <= c->n_pressure_probes)
-        snprintf(buf, size, "p %d: (x, y, z) = (%g, %g, %g) m", k, c->pressure_probes[k - 1][0],
-                 c->pressure_probes[k - 1][1], c->pressure_probes[k - 1][2]);
-    else
+    else if (in->has_case && pressure && k >= 1 && k <= c->n_pressure_probes) {
+        const double *x = c->pressure_probes[k - 1];
+        char size_of[48] = "";
+        if (x[3] > 0.0) snprintf(size_of, sizeof size_of, ", d = %g m", x[3]);
+        if (c->dim == 2)
+            snprintf(buf, size, "p %d: (x, y) = (%g, %g) m%s", k, x[0], x[1], size_of);
+        else
+            snprintf(buf, size, "p %d: (x, y, z) = (%g, %g, %g) m%s", k, x[0], x[1], x[2], size_of);
+    } else
         snprintf(buf, size, "%s %d", gauge ? "gauge" : "p", k);
 }
 

@@ -90,8 +90,12 @@ void run_write_probes_row(run *r)
     csv_put(c, r->s.t);
     for (int k = 0; k < cfg->n_gauges; k++)
         csv_put(c, probes_gauge(&r->probes, &r->s.p, cfg->gauges[k]));
-    for (int k = 0; k < cfg->n_pressure_probes; k++)
-        csv_put(c, probes_pressure(&r->probes, &r->s.p, cfg->pressure_probes[k]));
+    for (int k = 0; k < cfg->n_pressure_probes; k++) {
+        const double *x = cfg->pressure_probes[k];
+        csv_put(c, x[3] > 0.0
+                       ? probes_sensor(&r->probes, &r->s.p, x, x[3], config_wall_axis(cfg, x))
+                       : probes_pressure(&r->probes, &r->s.p, x));
+    }
     csv_end_row(c);
 }
 

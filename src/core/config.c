@@ -129,11 +129,12 @@ static bool set_gauges(ini_session *ctx, const ini_key *k, const char *s, char *
     return true;
 }
 
-/* Points "x y[ z]; x y[ z]": 2 or 3 coordinates each, the same number for all; whether that
- * number matches case.dim is checked once dim is final. */
+/* Points "x y[ z][ d=D]; ...": 2 or 3 coordinates each, the same number for all, and an
+ * optional diameter D >= 0 of a transducer (where it sits is checked with the tank); whether
+ * the number of coordinates matches case.dim is checked once dim is final. */
 static bool set_points(ini_session *ctx, const ini_key *k, const char *s, char *why, size_t n)
 {
-    double pts[CONFIG_PROBES_MAX][3] = {{0}};
+    double pts[CONFIG_PROBES_MAX][4] = {{0}};
     int count = 0, coords = 0;
     const char *p = ini_skip_space(s);
     while (*p) {
@@ -143,6 +144,18 @@ static bool set_points(ini_session *ctx, const ini_key *k, const char *s, char *
         }
         int c = 0;
         while (*p && *p != ';') {
+            if (strncmp(p, "d=", 2) == 0 && c >= 2) {
+                p += 2;
+                if (!list_number(k, &p, ";", &pts[count][3], why, n)) return false;
+                if (pts[count][3] < 0.0 || (*p && *p != ';')) {
+                    snprintf(why, n,
+                             "point %d: the diameter must be a length >= 0 (m) after "
+                             "the coordinates; must be %s",
+                             count + 1, k->allowed);
+                    return false;
+                }
+                break;
+            }
             if (c == 3) {
                 snprintf(why, n, "point %d has more than 3 coordinates; must be %s", count + 1,
                          k->allowed);
@@ -198,6 +211,13 @@ static void format_point_list(const config *cfg, int coords, char *buf, size_t s
             ini_format_double(cfg->pressure_probes[i][d], num, sizeof num);
             const char *sep = d ? " " : i ? "; " : "";
             int w = snprintf(buf + used, size - used, "%s%s", sep, num);
+            if (w < 0) return;
+            used += (size_t)w;
+        }
+        if (cfg->pressure_probes[i][3] > 0.0 && used < size) {
+            char num[32];
+            ini_format_double(cfg->pressure_probes[i][3], num, sizeof num);
+            int w = snprintf(buf + used, size - used, " d=%s", num);
             if (w < 0) return;
             used += (size_t)w;
         }
@@ -313,8 +333,10 @@ static const ini_key keys[] = {
              "x positions (m) inside the tank, separated by commas or spaces",
              "x of wave gauges: liquid depth on a vertical line, into probes.csv"),
     LIST_KEY("probes", "pressure", "", pressure_probes, set_points, format_points,
-             "points 'x y[ z]' (m) inside the tank, separated by ';'",
-             "points where the SPH pressure is sampled, into probes.csv"),
+             "points 'x y[ z][ d=D]' (m) inside the tank, separated by ';'; with a diameter "
+             "D > 0, on one wall with the face inside it",
+             "points where the SPH pressure is sampled, or sensors of diameter D on a wall that "
+             "read its mean over their face, into probes.csv"),
 
     KEY("output", "dir", INI_PATH, INI_NOT_EMPTY, "out/<name>", output_dir, ANY, NULL,
         "a directory path ('<name>' stands for case.name)",
@@ -497,17 +519,49 @@ static void check_probes(ini_session *ctx)
     }
     const double size[3] = {cfg->tank_length, cfg->tank_height, cfg->tank_width};
     for (int i = 0; i < cfg->n_pressure_probes; i++) {
+        const double *x = cfg->pressure_probes[i];
         for (int d = 0; d < cfg->dim; d++) {
-            double v = cfg->pressure_probes[i][d];
-            if (v < 0.0 || exceeds(v, size[d])) {
+            if (x[d] < 0.0 || exceeds(x[d], size[d])) {
                 snprintf(why, sizeof why,
                          "pressure point %d: %c = %g m is outside the tank, %c in [0, %g] m", i + 1,
-                         "xyz"[d], v, "xyz"[d], size[d]);
+                         "xyz"[d], x[d], "xyz"[d], size[d]);
                 ini_fail_key(ctx, pressure, why);
                 return;
             }
         }
+        if (!(x[3] > 0.0)) continue;
+        /* a transducer is flush with one wall, and its face lies inside that wall */
+        int axis = config_wall_axis(cfg, x);
+        if (axis < 0) {
+            snprintf(why, sizeof why, "pressure sensor %d (d = %g m) must lie on one wall%s", i + 1,
+                     x[3], axis == -2 ? ", not on an edge or corner" : "");
+            ini_fail_key(ctx, pressure, why);
+            return;
+        }
+        for (int d = 0; d < cfg->dim; d++) {
+            if (d == axis || (x[d] >= 0.5 * x[3] && !exceeds(x[d] + 0.5 * x[3], size[d]))) continue;
+            snprintf(why, sizeof why,
+                     "pressure sensor %d: its face (d = %g m) reaches past the wall's edge at "
+                     "%c = %g m",
+                     i + 1, x[3], "xyz"[d], x[d] < 0.5 * x[3] ? 0.0 : size[d]);
+            ini_fail_key(ctx, pressure, why);
+            return;
+        }
     }
+}
+
+int config_wall_axis(const config *cfg, const double x[3])
+{
+    const double size[3] = {cfg->tank_length, cfg->tank_height, cfg->tank_width};
+    int axis = -1;
+    for (int d = 0; d < cfg->dim; d++) {
+        /* on the wall to round-off of the tank's size, as a value typed in a case file is */
+        double tolerance = 1e-12 * size[d];
+        if (fabs(x[d]) > tolerance && fabs(x[d] - size[d]) > tolerance) continue;
+        if (axis != -1) return -2;
+        axis = d;
+    }
+    return axis;
 }
 
 /* In this order, after the required keys: defaults that depend on other keys need those keys

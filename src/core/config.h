@@ -74,7 +74,9 @@ typedef struct {
     int n_gauges;
     double gauges[CONFIG_PROBES_MAX];
     int n_pressure_probes;
-    double pressure_probes[CONFIG_PROBES_MAX][3];
+    /* x, y, z and the sensor's diameter (0: a point; > 0: a transducer flush with a wall,
+       which reads the mean pressure over its face) */
+    double pressure_probes[CONFIG_PROBES_MAX][4];
     /* [output] */
     char output_dir[CONFIG_PATH_MAX];
     double timeseries_every, snapshot_every, image_every, checkpoint_every;
@@ -110,6 +112,9 @@ void config_write_keys(FILE *out);
 /* The spellings of the case file (docs/case-file.md), e.g. "delta-plus-ale", "with-eta0". */
 const char *config_scheme_name(scheme_kind s);
 const char *config_motion_name(motion_kind m);
+/* The axis (0, 1, 2) of the tank wall that the point x (m) lies on, -1 when it lies on none,
+ * -2 when on more than one (an edge or a corner). */
+int config_wall_axis(const config *cfg, const double x[3]);
 const char *config_edbc_name(edbc_mode e);
 const char *config_volume_correction_name(volume_correction_kind v);
 const char *config_eta_control_name(eta_control_kind e);

@@ -87,3 +87,44 @@ double probes_pressure(const probes *pr, const particles *p, const double x[3])
     }
     return shepard > 0.0 ? weighted / shepard : 0.0;
 }
+
+#if DIM == 2
+/* Gauss-Legendre nodes and weights on [-1, 1], 8 points (the nodes in +- pairs) */
+static const double legendre8_node[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267,
+                                         0.9602898564975363};
+static const double legendre8_weight[4] = {0.3626837833783620, 0.3137066458778873,
+                                           0.2223810344533745, 0.1012285362903763};
+#else
+/* Gauss-Legendre nodes and weights on [-1, 1], 4 points, for the radius */
+static const double legendre4_node[2] = {0.3399810435848563, 0.8611363115940526};
+static const double legendre4_weight[2] = {0.6521451548625461, 0.3478548451374538};
+#endif
+
+double probes_sensor(const probes *pr, const particles *p, const double x[3], double diameter,
+                     int wall_axis)
+{
+    double radius = 0.5 * diameter, sum = 0.0, point[3] = {x[0], x[1], x[2]};
+#if DIM == 2
+    int along = wall_axis == 0 ? 1 : 0; /* the wall's direction in the plane */
+    for (int k = 0; k < 8; k++) {
+        double s = (k % 2 ? -1.0 : 1.0) * legendre8_node[k / 2];
+        point[along] = x[along] + radius * s;
+        sum += 0.5 * legendre8_weight[k / 2] * probes_pressure(pr, p, point);
+    }
+#else
+    int u = (wall_axis + 1) % 3, v = (wall_axis + 2) % 3; /* the wall's plane */
+    for (int i = 0; i < 4; i++) {
+        /* r in [0, R]: r = R (1 + s) / 2; the area element r dr dtheta over pi R^2 */
+        double s = (i % 2 ? -1.0 : 1.0) * legendre4_node[i / 2];
+        double r = 0.5 * radius * (1.0 + s), w_r = 0.5 * radius * legendre4_weight[i / 2] * r;
+        for (int a = 0; a < 8; a++) {
+            double theta = 2.0 * M_PI * (a + 0.5) / 8.0;
+            point[u] = x[u] + r * cos(theta);
+            point[v] = x[v] + r * sin(theta);
+            sum +=
+                w_r * (2.0 * M_PI / 8.0) * probes_pressure(pr, p, point) / (M_PI * radius * radius);
+        }
+    }
+#endif
+    return sum;
+}

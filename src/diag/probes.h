@@ -18,6 +18,7 @@ typedef struct {
 #define probes_init     DIM_NAME(probes_init)
 #define probes_gauge    DIM_NAME(probes_gauge)
 #define probes_pressure DIM_NAME(probes_pressure)
+#define probes_sensor   DIM_NAME(probes_sensor)
 
 void probes_init(probes *pr, double h, double tank_width);
 
@@ -33,5 +34,14 @@ double probes_gauge(const probes *pr, const particles *p, double x);
  * sum_j p_j W_j V_j / sum_j W_j V_j over the fluid and all ghosts (so a probe on a wall
  * reads the hydrostatic continuation of the ghosts); 0 where no particle is within 2h. */
 double probes_pressure(const probes *pr, const particles *p, const double x[3]);
+
+/* Pressure read by a transducer of the given diameter (m) flush with the wall whose normal is
+ * the axis `wall_axis`, centred at x: the mean of probes_pressure over its face, a segment of
+ * the wall (2D, the face's trace in the plane) or a disc on it (3D), as a transducer
+ * integrates the load on its membrane. Gauss-Legendre quadrature: 8 points along the
+ * segment; in 3D 4 radii (weighted by r) x 8 angles, exact for polynomials of degree 7 over
+ * the disc. */
+double probes_sensor(const probes *pr, const particles *p, const double x[3], double diameter,
+                     int wall_axis);
 
 #endif
