@@ -112,13 +112,13 @@ void config_write_keys(FILE *out);
 /* The spellings of the case file (docs/case-file.md), e.g. "delta-plus-ale", "with-eta0". */
 const char *config_scheme_name(scheme_kind s);
 const char *config_motion_name(motion_kind m);
-/* The axis (0, 1, 2) of the tank wall that the point x (m) lies on, -1 when it lies on none,
- * -2 when on more than one (an edge or a corner). */
-int config_wall_axis(const config *cfg, const double x[3]);
 const char *config_edbc_name(edbc_mode e);
 const char *config_volume_correction_name(volume_correction_kind v);
 const char *config_eta_control_name(eta_control_kind e);
 const char *config_wall_name(wall_kind w);
 const char *config_liquid_shape_name(liquid_shape_kind s);
+/* The axis (0, 1, 2) of the tank wall that the point x (m) lies on, -1 when it lies on none,
+ * -2 when on more than one (an edge or a corner). */
+int config_wall_axis(const config *cfg, const double x[3]);
 
 #endif
