@@ -13,10 +13,13 @@
  * threshold before the switch turns it.
  *
  * The adaptive control (`test_schemes adaptive`, eta_control.h) against the paper's switch on
- * the same SAP case run to 1.0 s (13 periods) at the paper's threshold, 0.01: the adaptive
+ * the same SAP case run to 0.8 s (10.4 periods) at the paper's threshold, 0.01: the adaptive
  * control must keep max |eps_v1| below the switch's with no more regime changes (the issue's
  * requirement), and the mass exact with eta between 0 and 1. At N = 20 the switch turns
- * eta to 1 at 0.70 s and eps_v1 peaks at +1.5 % (docs/validation.md). */
+ * eta to 1 at 0.70 s and eps_v1 reaches +1.37 % by 0.79 s (+1.55 % at 0.875 s); the
+ * adaptive control ends its eta = 0 regime at 0.46 s and stays within 0.43 %
+ * (docs/validation.md). 0.8 s rather than the 1.0 s it ran before: the longest test of the
+ * suite, and what it compares has happened by then. */
 #include "app/simulation.h"
 
 #include <omp.h>
@@ -123,7 +126,7 @@ typedef struct {
 static control_result run_control(const char *control)
 {
     const char *overrides[] = {"model.scheme=delta-plus-ale", "model.eta_threshold=0.01",
-                               "case.t_end=1.0", control};
+                               "case.t_end=0.8", control};
     char dir[64];
     table t;
     run_case_text(sap_case, overrides, 4, dir, &t);
@@ -175,7 +178,7 @@ static void test_adaptive_against_switch(void **state)
                "max |mass_err| %.1e\n",
                controls[k] + 18, r[k].switches, 100.0 * r[k].worst, r[k].eta_min, r[k].eta_max,
                r[k].mass);
-        assert_close(r[k].t_last, 1.0, 1e-12);
+        assert_close(r[k].t_last, 0.8, 1e-12);
         assert_true(r[k].mass < 1e-12);
         assert_true(r[k].eta_min >= 0.0 && r[k].eta_max <= 1.0);
     }
