@@ -22,7 +22,8 @@
 #define DIAMETER (10 * DR)
 #define REACH    10 /* lattice half-width in dr: the face's radius and the kernel's 2h, and 1 */
 
-static void fill_lattice(particles *p)
+/* The lattice holding p = y^2 and the probes of h = 2 dr. */
+static void fill_lattice(particles *p, probes *pr)
 {
     int side = 2 * REACH + 1;
     size_t n = 1;
@@ -38,15 +39,15 @@ static void fill_lattice(particles *p)
         p->p[i] = p->x[1][i] * p->x[1][i];
     }
     p->n_fluid = p->n_total = n;
+    probes_init(pr, 2.0 * DR, 1.0);
 }
 
 static void test_face_mean(void **state)
 {
     (void)state;
     particles p;
-    fill_lattice(&p);
     probes pr;
-    probes_init(&pr, 2.0 * DR, 1.0);
+    fill_lattice(&p, &pr);
     /* off the lattice's nodes, so that the face does not sample them only */
     const double centre[3] = {0.3 * DR, 0.2 * DR, -0.1 * DR};
     double point = probes_pressure(&pr, &p, centre);
@@ -66,9 +67,8 @@ static void test_small_face(void **state)
 {
     (void)state;
     particles p;
-    fill_lattice(&p);
     probes pr;
-    probes_init(&pr, 2.0 * DR, 1.0);
+    fill_lattice(&p, &pr);
     const double centre[3] = {0.0, 0.25 * DR, 0.0};
     double point = probes_pressure(&pr, &p, centre);
     assert_close(probes_sensor(&pr, &p, centre, 1e-9 * DR, 0) / point, 1.0, 1e-12);

@@ -185,19 +185,26 @@ static bool set_points(ini_session *ctx, const ini_key *k, const char *s, char *
     return true;
 }
 
+/* Appends prefix and the number v to buf (size bytes, `used` of them taken). False when the
+ * text cannot be formatted; a full buffer leaves *used >= size, which ends the callers' loops. */
+static bool append_number(char *buf, size_t size, size_t *used, const char *prefix, double v)
+{
+    char num[32];
+    ini_format_double(v, num, sizeof num);
+    int w = snprintf(buf + *used, size - *used, "%s%s", prefix, num);
+    if (w < 0) return false;
+    *used += (size_t)w;
+    return true;
+}
+
 static void format_gauges(const void *target, const ini_key *k, char *buf, size_t size)
 {
     (void)k;
     const config *cfg = target;
     size_t used = 0;
     buf[0] = '\0';
-    for (int i = 0; i < cfg->n_gauges && used < size; i++) {
-        char num[32];
-        ini_format_double(cfg->gauges[i], num, sizeof num);
-        int w = snprintf(buf + used, size - used, "%s%s", i ? ", " : "", num);
-        if (w < 0) break;
-        used += (size_t)w;
-    }
+    for (int i = 0; i < cfg->n_gauges && used < size; i++)
+        if (!append_number(buf, size, &used, i ? ", " : "", cfg->gauges[i])) break;
 }
 
 /* No space before ';': in INI " ;" starts a comment. */
@@ -206,21 +213,10 @@ static void format_point_list(const config *cfg, int coords, char *buf, size_t s
     size_t used = 0;
     buf[0] = '\0';
     for (int i = 0; i < cfg->n_pressure_probes && used < size; i++) {
-        for (int d = 0; d < coords && d < 3 && used < size; d++) {
-            char num[32];
-            ini_format_double(cfg->pressure_probes[i][d], num, sizeof num);
-            const char *sep = d ? " " : i ? "; " : "";
-            int w = snprintf(buf + used, size - used, "%s%s", sep, num);
-            if (w < 0) return;
-            used += (size_t)w;
-        }
-        if (cfg->pressure_probes[i][3] > 0.0 && used < size) {
-            char num[32];
-            ini_format_double(cfg->pressure_probes[i][3], num, sizeof num);
-            int w = snprintf(buf + used, size - used, " d=%s", num);
-            if (w < 0) return;
-            used += (size_t)w;
-        }
+        const double *x = cfg->pressure_probes[i];
+        for (int d = 0; d < coords && d < 3 && used < size; d++)
+            if (!append_number(buf, size, &used, d ? " " : i ? "; " : "", x[d])) return;
+        if (x[3] > 0.0 && used < size && !append_number(buf, size, &used, " d=", x[3])) return;
     }
 }
 

@@ -114,15 +114,15 @@ double probes_sensor(const probes *pr, const particles *p, const double x[3], do
 #else
     int u = (wall_axis + 1) % 3, v = (wall_axis + 2) % 3; /* the wall's plane */
     for (int i = 0; i < 4; i++) {
-        /* r in [0, R]: r = R (1 + s) / 2; the area element r dr dtheta over pi R^2 */
+        /* r = R (1 + s) / 2 in [0, R]; the mean over the disc is the integral of f r dr dtheta
+           over pi R^2: (R / 2) w_i r_i x (2 pi / 8) / (pi R^2) = w_i r_i / (8 R) a point */
         double s = (i % 2 ? -1.0 : 1.0) * legendre4_node[i / 2];
-        double r = 0.5 * radius * (1.0 + s), w_r = 0.5 * radius * legendre4_weight[i / 2] * r;
+        double r = 0.5 * radius * (1.0 + s), weight = legendre4_weight[i / 2] * r / (8.0 * radius);
         for (int a = 0; a < 8; a++) {
             double theta = 2.0 * M_PI * (a + 0.5) / 8.0;
             point[u] = x[u] + r * cos(theta);
             point[v] = x[v] + r * sin(theta);
-            sum +=
-                w_r * (2.0 * M_PI / 8.0) * probes_pressure(pr, p, point) / (M_PI * radius * radius);
+            sum += weight * probes_pressure(pr, p, point);
         }
     }
 #endif
