@@ -23,14 +23,17 @@
 
 extern char **environ;
 
-/* 1.2 s of sway at the first sloshing period's neighbourhood: the adaptive control leaves
- * its eta = 0 regime near t = 1.06 s (after 2 T_f of history), so a restart must carry its
- * history; U_max passes c0/10 (speed events); two periods end (dissipation.csv). Checkpoints
- * every 0.05 wall-clock seconds: several per run, some cut by kill -9. */
+/* 1.2 s of sway with roll about the tank's centre (a rotating frame: the Coriolis, Euler and
+ * centrifugal terms and the turning gravity must all restart exactly) at the first sloshing
+ * period's neighbourhood: the adaptive control leaves its eta = 0 regime after 2 T_f of
+ * history, so a restart must carry its history; U_max passes c0/10 (speed events); two periods end
+ * (dissipation.csv). Checkpoints every 0.05 wall-clock seconds: several per run, some cut by kill
+ * -9. */
 static const char case_text[] = "[case]\nname = slosh\nt_end = 1.2\n"
                                 "[tank]\nlength = 0.4\nheight = 0.3\n"
                                 "[liquid]\nheight = 0.1\n"
-                                "[motion]\ntype = sway\namplitude = 0.03\nperiod = 0.5\n"
+                                "[motion]\ntype = sway+roll\namplitude = 0.03\nangle = 0.05\n"
+                                "period = 0.5\ncenter = 0.2 0.15\n"
                                 "[model]\nscheme = delta-plus-ale\neta_control = adaptive\n"
                                 "eta_threshold = 0.001\nedbc = with-eta0\n"
                                 "[numerics]\nresolution = 10\n"
@@ -240,7 +243,7 @@ static inline int count_numbered(const char *dir, const char *pattern)
 static inline void assert_same_run(const char *dir)
 {
     static const char *const files[] = {"timeseries.csv", "events.csv", "dissipation.csv",
-                                        "probes.csv", "snapshots.xmf"};
+                                        "probes.csv",     "loads.csv",  "snapshots.xmf"};
     char a[600], b[600];
     for (size_t k = 0; k < sizeof files / sizeof files[0]; k++) {
         snprintf(a, sizeof a, "ref/%s", files[k]);

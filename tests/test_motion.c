@@ -199,6 +199,7 @@ static char table_path[sizeof table_dir + 16];
 static int table_setup(void **state)
 {
     (void)state;
+    memcpy(table_dir + sizeof table_dir - 7, "XXXXXX", 6); /* a fresh name for each test */
     if (!mkdtemp(table_dir)) return -1;
     snprintf(table_path, sizeof table_path, "%s/table.csv", table_dir);
     return 0;
@@ -269,6 +270,156 @@ static void test_table_reproduces_acceleration(void **state)
     motion_free(&mo);
 }
 
+/* ---- rotation (docs/case-file.md [motion]) ------------------------------------------------- */
+
+/* Writes `text` as the table file of this test and loads a motion with it (dim 2 or 3). */
+static int motion_from_table(motion *mo, const char *text, int dim, char *err, size_t err_len)
+{
+    FILE *f = fopen(table_path, "w");
+    assert_non_null(f);
+    fputs(text, f);
+    assert_int_equal(fclose(f), 0);
+    char case_text[2048];
+    snprintf(case_text, sizeof case_text,
+             "%s[case]\ndim = %d\n[tank]\nwidth = 0.3\n[motion]\ntype = table\nfile = %s\n",
+             CASE_HEAD, dim, table_path);
+    config cfg;
+    if (config_load_string(&cfg, case_text, "motion-test", NULL, 0, err, err_len)) return 2;
+    return motion_init(mo, &cfg, err, err_len);
+}
+
+/* A harmonic roll: Theta sin(wt + phi) about z through the bottom centre (0.5, 0): the frame's
+ * Omega = (0, 0, theta'), dOmega/dt = (0, 0, theta''), gravity R_z(theta)^T (0, -g) =
+ * (-g sin theta, -g cos theta): a positive roll turns the tank counter-clockwise, so the
+ * gravity of the tank frame points to its left wall (x < 0). No translation. The formulas are
+ * those of the sway with Theta for A; rounding only (a few eps of each term). */
+static void test_roll_frame(void **state)
+{
+    (void)state;
+    const double th = 0.1, T = 0.9, w = 2.0 * PI / T, l = 0.2, phi = 0.3, dphi = 0.4;
+    motion mo;
+    motion_from(&mo, "[motion]\ntype = roll\nangle = 0.1\nperiod = 0.9\ndecay = 0.2\n"
+                     "phase = 0.3\nangle_phase = 0.4\n");
+    assert_true(mo.rotates && mo.center[0] == 0.5 && mo.center[1] == 0.0);
+    for (int k = 0; k <= 100; k++) {
+        double t = 0.031 * k, e = th * exp(-l * t), a = w * t + phi + dphi;
+        double q = e * sin(a), q1 = e * (w * cos(a) - l * sin(a));
+        double q2 = e * ((l * l - w * w) * sin(a) - 2.0 * l * w * cos(a));
+        tank_frame f = motion_frame(&mo, G, t);
+        double tol = 64.0 * DBL_EPSILON * (1.0 + fabs(a));
+        assert_close(f.omega[2], q1, tol * th * (w + l));
+        assert_close(f.omega_dot[2], q2, tol * th * (w + l) * (w + l));
+        assert_true(f.omega[0] == 0.0 && f.omega[1] == 0.0);
+        assert_close(f.gravity[0], -G * sin(q), tol * G);
+        assert_close(f.gravity[1], -G * cos(q), tol * G);
+        assert_true(f.origin_acc[0] == 0.0 && f.origin_acc[1] == 0.0);
+        assert_true(f.rotating);
+    }
+    motion_free(&mo);
+}
+
+/* sway+roll: the sway moves the centre along the inertial x, so the frame sees its
+ * acceleration turned into the tank's axes, R^T (a, 0) = (a cos q, -a sin q). */
+static void test_sway_roll_frame(void **state)
+{
+    (void)state;
+    motion both, sway;
+    motion_from(&both, "[motion]\ntype = sway+roll\namplitude = 0.05\nangle = 0.2\nperiod = 1.1\n"
+                       "center = 0.2 0.3\n");
+    motion_from(&sway, "[motion]\ntype = sway\namplitude = 0.05\nperiod = 1.1\n");
+    assert_true(both.center[0] == 0.2 && both.center[1] == 0.3);
+    for (int k = 0; k <= 50; k++) {
+        double t = 0.047 * k, a[3], q[3], q1[3], q2[3];
+        motion_acceleration(&sway, t, a);
+        motion_angles(&both, t, q, q1, q2);
+        tank_frame f = motion_frame(&both, G, t);
+        assert_close(f.origin_acc[0], a[0] * cos(q[0]), 1e-14 * (1.0 + fabs(a[0])));
+        assert_close(f.origin_acc[1], -a[0] * sin(q[0]), 1e-14 * (1.0 + fabs(a[0])));
+        assert_true(f.center[0] == 0.2 && f.center[1] == 0.3);
+    }
+    motion_free(&both);
+    motion_free(&sway);
+}
+
+/* Three angles at once (a 3D table): Omega and dOmega/dt come from the chain rule of
+ * R = R_y(yaw) R_x(pitch) R_z(roll). Checked against R itself by central differences:
+ * [Omega]x = R^T R' and dOmega/dt = d(Omega)/dt (the body-axes rate of the body-axes vector
+ * equals R^T w' because Omega x Omega = 0). With step d the truncation is d^2/6 of the third
+ * derivatives, at most (sum of Theta_k w^k)^3-like terms ~ 1e-3 here, so 1e-9 at d = 1e-4;
+ * rounding eps/d = 2e-12. Tolerance 1e-7. And gravity is R^T (0, -g, 0). */
+static void test_orientation_rates(void **state)
+{
+    (void)state;
+    char text[65536];
+    size_t used = (size_t)snprintf(text, sizeof text, "t,roll,pitch,yaw\n");
+    for (int k = 0; k <= 400; k++) {
+        double t = 0.01 * k;
+        used += (size_t)snprintf(text + used, sizeof text - used, "%.17g,%.17g,%.17g,%.17g\n", t,
+                                 0.3 * sin(2.0 * t), 0.2 * sin(1.3 * t + 0.5), 0.4 * sin(0.7 * t));
+    }
+    motion mo;
+    char err[512];
+    assert_int_equal(motion_from_table(&mo, text, 3, err, sizeof err), 0);
+    const double d = 1e-4;
+    for (int k = 1; k < 30; k++) {
+        /* mid-way between knots: the spline is one cubic over [t - d, t + d] (its third
+           derivative jumps at the knots, which a difference across one would see as O(d)) */
+        double t = 0.1 * k + 0.005, rp[3][3], rm[3][3], r[3][3];
+        motion_rotation(&mo, t + d, rp);
+        motion_rotation(&mo, t - d, rm);
+        motion_rotation(&mo, t, r);
+        double spin[3][3]; /* R^T R' */
+        for (int i = 0; i < 3; i++)
+            for (int j = 0; j < 3; j++) {
+                spin[i][j] = 0.0;
+                for (int m = 0; m < 3; m++) spin[i][j] += r[m][i] * (rp[m][j] - rm[m][j]) / (2 * d);
+            }
+        tank_frame f = motion_frame(&mo, G, t), fp = motion_frame(&mo, G, t + d),
+                   fm = motion_frame(&mo, G, t - d);
+        assert_close(f.omega[0], spin[2][1], 1e-7);
+        assert_close(f.omega[1], spin[0][2], 1e-7);
+        assert_close(f.omega[2], spin[1][0], 1e-7);
+        for (int i = 0; i < 3; i++) {
+            assert_close(f.omega_dot[i], (fp.omega[i] - fm.omega[i]) / (2 * d), 1e-7);
+            assert_close(f.gravity[i], -G * r[1][i], 1e-14 * G);
+        }
+    }
+    motion_free(&mo);
+}
+
+/* A header that names t,x,y reads as the positional t,x,y of before: the same accelerations
+ * bit for bit; a roll column turns the tank; pitch in 2D is refused. */
+static void test_named_columns(void **state)
+{
+    (void)state;
+    const char rows[] = "0,0,0\n0.5,0.01,0.002\n1,0.03,-0.001\n1.5,0.02,0\n2,0,0.001\n";
+    char named[256], positional[256], err[512];
+    snprintf(named, sizeof named, "t,x,y\n%s", rows);
+    snprintf(positional, sizeof positional, "time (s),x (m),y (m)\n%s", rows);
+    motion a, b;
+    assert_int_equal(motion_from_table(&a, named, 2, err, sizeof err), 0);
+    assert_int_equal(motion_from_table(&b, positional, 2, err, sizeof err), 0);
+    for (int k = 0; k <= 40; k++) {
+        tank_frame fa = motion_frame(&a, G, 0.05 * k), fb = motion_frame(&b, G, 0.05 * k);
+        assert_memory_equal(&fa, &fb, sizeof fa);
+    }
+    assert_false(a.rotates);
+    motion_free(&a);
+    motion_free(&b);
+    motion r;
+    assert_int_equal(
+        motion_from_table(&r, "t, roll\n0,0\n1,0.1\n2,0\n3,-0.1\n", 2, err, sizeof err), 0);
+    assert_true(r.rotates && r.pos[MOTION_X] == NULL);
+    motion_free(&r);
+    assert_int_equal(motion_from_table(&r, "t,x,y,pitch\n0,0,0,0\n1,0,0,0\n2,0,0,0\n3,0,0,0\n", 2,
+                                       err, sizeof err),
+                     2);
+    assert_non_null(strstr(err, "3D only"));
+    assert_int_equal(motion_from_table(&r, "t,roll\n0,0\n1,0.1,2\n2,0\n3,0\n", 2, err, sizeof err),
+                     2);
+    assert_non_null(strstr(err, ":3: expected 2 numbers t,roll"));
+}
+
 /* ---- g_max ---------------------------------------------------------------------------------- */
 
 /* g_eff = g - a_tank with g = (0, -g) (theory §6). Heave: |g_eff| = |g + A w^2 cos(wt + p)|,
@@ -311,6 +462,10 @@ int main(void)
         cmocka_unit_test_setup_teardown(test_table_reproduces_acceleration, table_setup,
                                         table_teardown),
         cmocka_unit_test(test_max_effective_gravity),
+        cmocka_unit_test(test_roll_frame),
+        cmocka_unit_test(test_sway_roll_frame),
+        cmocka_unit_test_setup_teardown(test_orientation_rates, table_setup, table_teardown),
+        cmocka_unit_test_setup_teardown(test_named_columns, table_setup, table_teardown),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

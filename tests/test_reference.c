@@ -87,13 +87,17 @@ static const reference_run runs[] = {
     {"patch",
      "tests/data/reference/patch.ini", /* test_capillary's ellipse */
      {"output.snapshot_every=0.02", OUTPUTS, NULL}},
+    {"roll",
+     "cases/roll.ini", /* the rotating frame; recorded when rotation came, not by 617b8b5 */
+     {"case.t_end=0.1", "numerics.resolution=8", "output.snapshot_every=0.1",
+      "output.timeseries_every=0.02", OUTPUTS, NULL}},
 };
 
 /* The run's outputs as the digest text (the file header's comment says what is in it). */
 static char *digest_of_run(const char *dir)
 {
     static const char *const csv_files[] = {"timeseries.csv", "events.csv", "dissipation.csv",
-                                            "probes.csv", "snapshots.xmf"};
+                                            "probes.csv",     "loads.csv",  "snapshots.xmf"};
     char *text = NULL, path[512];
     size_t len = 0;
     FILE *out = open_memstream(&text, &len);

@@ -15,9 +15,9 @@
 
 /* The files of a run at the top of its folder (run_outputs.c, restart.c, motion table). */
 static const char *const run_files[] = {
-    "timeseries.csv", "events.csv",       "dissipation.csv",      "probes.csv",
-    "log.txt",        "case.ini",         "checkpoint.h5",        "checkpoint.h5.tmp",
-    "snapshots.xmf",  "motion_table.csv", "motion_table.csv.tmp",
+    "timeseries.csv",    "events.csv",    "dissipation.csv",  "probes.csv",
+    "loads.csv",         "log.txt",       "case.ini",         "checkpoint.h5",
+    "checkpoint.h5.tmp", "snapshots.xmf", "motion_table.csv", "motion_table.csv.tmp",
 };
 enum { N_RUN_FILES = sizeof run_files / sizeof run_files[0] };
 

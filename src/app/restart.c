@@ -27,7 +27,8 @@
  *                            name changed when the surface energy left it, so that an older
  *                            checkpoint is refused)
  *   run_i64           i64    period, n_snapshots, n_images, speed_warned
- *   csv_sizes         i64    bytes of timeseries.csv, events.csv, dissipation.csv, probes.csv
+ *   csv_sizes         i64    bytes of timeseries.csv, events.csv, dissipation.csv, probes.csv,
+ *                            loads.csv (the first four in checkpoints from before loads.csv)
  *                            (-1: the run does not write it)
  *   snapshot_times    f64    n_snapshots: the XDMF index
  *   snapshot_counts   i64    n_snapshots
@@ -55,7 +56,9 @@
     "mech_energy0,mass0,v0,ediss_period_start,surface_loss_period_start,next_series,"              \
     "next_snapshot,next_image"
 #define RUN_I64   "period,n_snapshots,n_images,speed_warned"
-#define CSV_SIZES "timeseries,events,dissipation,probes"
+#define CSV_SIZES "timeseries,events,dissipation,probes,loads"
+/* a checkpoint from before loads.csv: its run resumes with a new loads.csv */
+#define CSV_SIZES_BEFORE_LOADS "timeseries,events,dissipation,probes"
 
 /* The particles' persistent state (core/particles.h, FIELD_STATE), one item per scalar field
  * and per component of a vector field ("x_0", "x_1", ...), int64 or float64. */
@@ -309,9 +312,14 @@ static int load_snapshot_index(run *r, const checkpoint_data *cd, int n, char *e
 static int load_outputs(run *r, const checkpoint_data *cd, char *err, size_t err_len)
 {
     int64_t k[4], sizes[RUN_N_CSV];
-    if (take(cd, "run_i64", CHECKPOINT_I64, 4, RUN_I64, k, err, err_len) ||
-        take(cd, "csv_sizes", CHECKPOINT_I64, RUN_N_CSV, CSV_SIZES, sizes, err, err_len))
-        return -1;
+    if (take(cd, "run_i64", CHECKPOINT_I64, 4, RUN_I64, k, err, err_len)) return -1;
+    if (take(cd, "csv_sizes", CHECKPOINT_I64, RUN_N_CSV, CSV_SIZES, sizes, err, err_len)) {
+        char older[256];
+        if (take(cd, "csv_sizes", CHECKPOINT_I64, RUN_CSV_LOADS, CSV_SIZES_BEFORE_LOADS, sizes,
+                 older, sizeof older))
+            return -1; /* with the message of the present layout */
+        sizes[RUN_CSV_LOADS] = -1;
+    }
     if (k[1] < 0 || k[1] > INT32_MAX || k[2] < 0 || k[2] > INT32_MAX) {
         snprintf(err, err_len, "dataset 'run_i64' holds impossible counts");
         return -1;

@@ -11,6 +11,7 @@
 #include "io/image.h"
 #include "io/snapshot.h"
 #include "scheme/control.h"
+#include "scheme/loads.h"
 #include "scheme/solver.h"
 
 #include <errno.h>
@@ -96,6 +97,39 @@ void run_write_probes_row(run *r)
                        ? probes_sensor(&r->probes, &r->s.p, x, x[3], config_wall_axis(cfg, x))
                        : probes_pressure(&r->probes, &r->s.p, x));
     }
+    csv_end_row(c);
+}
+
+/* One row of loads.csv: t, the force and the moment about motion.center in the tank's axes,
+ * both in the inertial axes (R F, R M), then the liquid's momentum and body force in the tank
+ * frame (docs/loads.md). */
+void run_write_loads_row(run *r)
+{
+    solver *s = &r->s;
+    tank_loads l;
+    tank_frame frame = solver_frame(s, s->t);
+    if (loads_compute(&s->pp, &s->p, &s->nl, &frame, &l)) {
+        log_error("vcsph: loads: out of memory; loads.csv misses t = %.9g s", s->t);
+        return;
+    }
+    double rot[3][3], force[3], moment[3];
+    motion_rotation(&s->mo, s->t, rot);
+    for (int i = 0; i < 3; i++) {
+        force[i] = moment[i] = 0.0;
+        for (int j = 0; j < 3; j++) {
+            force[i] += rot[i][j] * l.force[j];
+            moment[i] += rot[i][j] * l.moment[j];
+        }
+    }
+    csv_file *c = &r->loads;
+    csv_put(c, s->t);
+    for (int frame = 0; frame < 2; frame++) {
+        const double *f = frame ? force : l.force, *m = frame ? moment : l.moment;
+        for (int d = 0; d < DIM; d++) csv_put(c, f[d]);
+        for (int d = 0; d < 3; d++) csv_put(c, m[d]);
+    }
+    for (int d = 0; d < DIM; d++) csv_put(c, l.momentum[d]);
+    for (int d = 0; d < DIM; d++) csv_put(c, l.body[d]);
     csv_end_row(c);
 }
 
@@ -337,7 +371,9 @@ static int open_csv(run *r, int k, const char *header)
 {
     char path[CONFIG_PATH_MAX + 64];
     run_out_path(r, path, sizeof path, run_csv_name(k));
-    if (r->resumed) return csv_reopen(run_csv(r, k), path, r->resume_sizes[k]);
+    /* a checkpoint from before loads.csv recorded no size for it: it starts anew */
+    if (r->resumed && r->resume_sizes[k] >= 0)
+        return csv_reopen(run_csv(r, k), path, r->resume_sizes[k]);
     return csv_open(run_csv(r, k), path, header);
 }
 
@@ -408,6 +444,12 @@ static int open_files(run *r)
         return -1;
     if (run_has_probes(r->cfg) && open_probes(r)) return -1;
     if (open_csv(r, RUN_CSV_EVENTS, "t,event,detail")) return -1;
+    if (open_csv(r, RUN_CSV_LOADS,
+                 DIM == 2 ? "t,fx,fy,mx,my,mz,fx_inertial,fy_inertial,mx_inertial,my_inertial,"
+                            "mz_inertial,px,py,bx,by"
+                          : "t,fx,fy,fz,mx,my,mz,fx_inertial,fy_inertial,fz_inertial,mx_inertial,"
+                            "my_inertial,mz_inertial,px,py,pz,bx,by,bz"))
+        return -1;
     if (r->resumed) {
         /* snapshots and images numbered from the checkpoint's counts on, a half-written
            checkpoint.h5.tmp */

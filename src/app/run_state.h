@@ -17,7 +17,14 @@
 #include <stdio.h>
 
 /* The CSV files of a run, in the order of the checkpoint's csv_sizes. */
-enum { RUN_CSV_TIMESERIES, RUN_CSV_EVENTS, RUN_CSV_DISSIPATION, RUN_CSV_PROBES, RUN_N_CSV };
+enum {
+    RUN_CSV_TIMESERIES,
+    RUN_CSV_EVENTS,
+    RUN_CSV_DISSIPATION,
+    RUN_CSV_PROBES,
+    RUN_CSV_LOADS,
+    RUN_N_CSV
+};
 
 typedef struct {
     solver s;
@@ -25,7 +32,7 @@ typedef struct {
     const run_options *opt;
     int lock_fd;     /* the output folder's lock (output_folder.h), -1 until taken */
     char *case_text; /* resolved case.ini, also stored in every snapshot and checkpoint */
-    csv_file timeseries, events, probes_csv, dissipation;
+    csv_file timeseries, events, probes_csv, dissipation, loads;
     probes probes;
     double energy0; /* ekin + epot + eint at t = 0 */
     /* dissipation per excitation period (theory §10): the period that ends next, and
@@ -56,13 +63,14 @@ typedef struct {
 static inline const char *run_csv_name(int k)
 {
     static const char *const names[RUN_N_CSV] = {"timeseries.csv", "events.csv", "dissipation.csv",
-                                                 "probes.csv"};
+                                                 "probes.csv", "loads.csv"};
     return names[k];
 }
 
 static inline csv_file *run_csv(run *r, int k)
 {
-    csv_file *files[RUN_N_CSV] = {&r->timeseries, &r->events, &r->dissipation, &r->probes_csv};
+    csv_file *files[RUN_N_CSV] = {&r->timeseries, &r->events, &r->dissipation, &r->probes_csv,
+                                  &r->loads};
     return files[k];
 }
 
@@ -88,6 +96,7 @@ static inline double run_period_end(const run *r) { return (double)r->period * r
 #define run_open_outputs          DIM_NAME(run_open_outputs)
 #define run_write_series_row      DIM_NAME(run_write_series_row)
 #define run_write_probes_row      DIM_NAME(run_write_probes_row)
+#define run_write_loads_row       DIM_NAME(run_write_loads_row)
 #define run_write_dissipation_row DIM_NAME(run_write_dissipation_row)
 #define run_write_snapshot        DIM_NAME(run_write_snapshot)
 #define run_write_image           DIM_NAME(run_write_image)
@@ -111,6 +120,8 @@ int run_open_outputs(run *r);
 void run_write_series_row(run *r, int with_geometry);
 /* One row of probes.csv. */
 void run_write_probes_row(run *r);
+/* One row of loads.csv at the current state (docs/loads.md); needs this step's neighbours. */
+void run_write_loads_row(run *r);
 /* One row of dissipation.csv for the period that ends now, which it closes. */
 void run_write_dissipation_row(run *r);
 /* snapshots/NNNNNN.h5 of the current state and the XDMF index. Returns 0 or -1. */

@@ -39,6 +39,7 @@ static void close_run(run *r)
     csv_close(&r->events);
     csv_close(&r->probes_csv);
     csv_close(&r->dissipation);
+    csv_close(&r->loads);
     for (int k = 0; k < r->n_snapshots; k++) free(r->snapshot_files[k]);
     free(r->snapshot_files);
     free(r->snapshot_times);
@@ -93,6 +94,7 @@ static int outputs_due(run *r, int last)
     double t = r->s.t;
     if (output_due(t, cfg->timeseries_every, &r->next_series, last)) {
         run_write_series_row(r, 1);
+        run_write_loads_row(r);
         if (run_has_probes(cfg)) run_write_probes_row(r);
     }
     if (run_has_periods(r) && t >= run_period_end(r) * (1.0 - 1e-12)) run_write_dissipation_row(r);

@@ -5,17 +5,20 @@
  *
  *     f(r, u) = g - a0 - dOmega/dt x r - Omega x (Omega x r) - 2 Omega x u
  *
- * (translation, Euler, centrifugal and Coriolis terms). vcsph's motions today translate the
- * tank (sway, heave, a table of positions): Omega = 0 and f = g - a0 everywhere, the g_eff of
- * theory §6. A rotating tank fills in Omega and dOmega/dt; nothing else changes. */
+ * (translation, Euler, centrifugal and Coriolis terms), with r measured from the point
+ * `center` on the rotation axis and a0 that point's acceleration. A tank that only translates
+ * (sway, heave, a table of positions) has Omega = 0 and f = g - a0 everywhere, the g_eff of
+ * theory §6; a rolling, pitching or yawing one fills in Omega, dOmega/dt and turns g. */
 #ifndef VCSPH_FRAME_H
 #define VCSPH_FRAME_H
 
+#include <math.h>
 #include <stdbool.h>
 
 typedef struct {
     double gravity[3];    /* g in the frame's axes (m/s^2): (0, -|g|, 0) for a level tank */
-    double origin_acc[3]; /* a0: acceleration of the frame's origin (m/s^2) */
+    double origin_acc[3]; /* a0: acceleration of the point `center` (m/s^2) */
+    double center[3];     /* a point of the rotation axis, tank coordinates (m) */
     double omega[3];      /* angular velocity (rad/s); in 2D only omega[2] */
     double omega_dot[3];  /* angular acceleration (rad/s^2) */
     bool rotating;        /* Omega or dOmega/dt not zero */
@@ -27,6 +30,22 @@ static inline void frame_cross(const double a[3], const double b[3], double out[
     out[0] = a[1] * b[2] - a[2] * b[1];
     out[1] = a[2] * b[0] - a[0] * b[2];
     out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+static inline double vec3_norm(const double a[3])
+{
+    return sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+}
+
+/* The part of the body force at r (relative to `center`, 3-vector) that rotation adds:
+ * -(dOmega/dt x r) - Omega x (Omega x r), the Euler and centrifugal terms (per unit mass). */
+static inline void frame_rotation_force(const tank_frame *f, const double r[3], double out[3])
+{
+    double euler[3], spin[3], centrifugal[3];
+    frame_cross(f->omega_dot, r, euler);
+    frame_cross(f->omega, r, spin);
+    frame_cross(f->omega, spin, centrifugal);
+    for (int d = 0; d < 3; d++) out[d] = -euler[d] - centrifugal[d];
 }
 
 #ifdef DIM /* the body force, for the particle code (compiled for DIM = 2 and 3) */
@@ -45,14 +64,11 @@ static inline vec frame_body_force(const tank_frame *f, vec r, vec u)
 {
     vec force = frame_translation_force(f);
     if (!f->rotating) return force;
-    double r3[3] = {0.0, 0.0, 0.0}, u3[3] = {0.0, 0.0, 0.0}, euler[3], spin[3], centrifugal[3],
-           coriolis[3];
-    for (int d = 0; d < DIM; d++) r3[d] = r.c[d], u3[d] = u.c[d];
-    frame_cross(f->omega_dot, r3, euler);
-    frame_cross(f->omega, r3, spin);
-    frame_cross(f->omega, spin, centrifugal);
+    double r3[3] = {0.0, 0.0, 0.0}, u3[3] = {0.0, 0.0, 0.0}, rotation[3], coriolis[3];
+    for (int d = 0; d < DIM; d++) r3[d] = r.c[d] - f->center[d], u3[d] = u.c[d];
+    frame_rotation_force(f, r3, rotation);
     frame_cross(f->omega, u3, coriolis);
-    for (int d = 0; d < DIM; d++) force.c[d] -= euler[d] + centrifugal[d] + 2.0 * coriolis[d];
+    for (int d = 0; d < DIM; d++) force.c[d] += rotation[d] - 2.0 * coriolis[d];
     return force;
 }
 #endif

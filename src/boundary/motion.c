@@ -1,6 +1,7 @@
 /* motion: sway, heave, decay, phase, duration, and tabulated motion (theory §6). */
 #include "boundary/motion.h"
 
+#include <ctype.h>
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
@@ -8,15 +9,18 @@
 #include <string.h>
 
 /* Displacement s(t) = A e^{-lt} f(wt + phase), its first and second derivatives, for
- * f = sin (sway) or f = -cos (heave). With theta = wt + phase and E = A e^{-lt}:
- *   sway:  x = E sin(theta),  x' = E (w cos - l sin),  x'' = E [(l^2 - w^2) sin - 2 l w cos]
- *   heave: y = -E cos(theta), y' = E (l cos + w sin),  y'' = E [(w^2 - l^2) cos - 2 l w sin] */
-static void harmonic(const motion *mo, double t, double *pos, double *vel, double *acc)
+ * f = sin (sway, and every rotation) or f = -cos (heave). With theta = wt + phase and
+ * E = A e^{-lt}:
+ *   sin:  x = E sin(theta),  x' = E (w cos - l sin),  x'' = E [(l^2 - w^2) sin - 2 l w cos]
+ *   -cos: y = -E cos(theta), y' = E (l cos + w sin),  y'' = E [(w^2 - l^2) cos - 2 l w sin] */
+static void harmonic(const motion *mo, int channel, double t, double *pos, double *vel, double *acc)
 {
+    bool rotation = channel == mo->rotation;
     double w = mo->omega, l = mo->decay;
-    double e = mo->amplitude * exp(-l * t);
-    double th = w * t + mo->phase, s = sin(th), c = cos(th);
-    if (mo->kind == MOTION_SWAY) {
+    double e = (rotation ? mo->angle : mo->amplitude) * exp(-l * t);
+    double th = w * t + (rotation ? mo->phase + mo->angle_phase : mo->phase);
+    double s = sin(th), c = cos(th);
+    if (rotation || mo->kind == MOTION_SWAY || mo->kind == MOTION_SWAY_ROLL) {
         *pos = e * s;
         *vel = e * (w * c - l * s);
         *acc = e * ((l * l - w * w) * s - 2.0 * l * w * c);
@@ -41,6 +45,12 @@ static size_t knot_interval(const motion *mo, double t)
     return lo;
 }
 
+static bool driven(const motion *mo, int channel)
+{
+    if (mo->kind == MOTION_TABLE) return mo->pos[channel] != NULL;
+    return channel == mo->translation || channel == mo->rotation;
+}
+
 static int in_motion(const motion *mo, double t)
 {
     if (mo->kind == MOTION_NONE) return 0;
@@ -49,67 +59,155 @@ static int in_motion(const motion *mo, double t)
     return 1;
 }
 
-void motion_acceleration(const motion *mo, double t, double a[3])
+/* Second derivative of one channel at t (zero after `duration` and outside a table). */
+static double channel_acceleration(const motion *mo, int channel, double t)
 {
-    a[0] = a[1] = a[2] = 0.0;
-    if (!in_motion(mo, t)) return;
-    if (mo->kind == MOTION_TABLE) {
-        /* the spline's second derivative is linear between knots */
+    if (!driven(mo, channel) || !in_motion(mo, t)) return 0.0;
+    if (mo->kind == MOTION_TABLE) { /* the spline's second derivative is linear between knots */
         size_t k = knot_interval(mo, t);
         double w = (t - mo->t[k]) / (mo->t[k + 1] - mo->t[k]);
-        for (int d = 0; d < 3; d++) a[d] = (1.0 - w) * mo->acc[d][k] + w * mo->acc[d][k + 1];
+        return (1.0 - w) * mo->acc[channel][k] + w * mo->acc[channel][k + 1];
+    }
+    double pos, vel, acc;
+    harmonic(mo, channel, t, &pos, &vel, &acc);
+    return acc;
+}
+
+void motion_acceleration(const motion *mo, double t, double a[3])
+{
+    for (int d = 0; d < 3; d++) a[d] = channel_acceleration(mo, d, t);
+}
+
+/* Value and rate of one channel without the `duration` cut; a table's ends hold still. */
+static void channel_state(const motion *mo, int channel, double t, double *x, double *v)
+{
+    *x = *v = 0.0;
+    if (!driven(mo, channel)) return;
+    if (mo->kind != MOTION_TABLE) {
+        double acc;
+        harmonic(mo, channel, t, x, v, &acc);
         return;
     }
-    double pos, vel;
-    harmonic(mo, t, &pos, &vel, &a[mo->kind == MOTION_SWAY ? 0 : 1]);
+    const double *y = mo->pos[channel], *y2 = mo->acc[channel];
+    if (t <= mo->t[0] || t >= mo->t[mo->n_knots - 1]) {
+        *x = y[t <= mo->t[0] ? 0 : mo->n_knots - 1];
+        return;
+    }
+    /* the cubic spline between knots k and k+1, and its derivative */
+    size_t k = knot_interval(mo, t);
+    double hk = mo->t[k + 1] - mo->t[k];
+    double b = (t - mo->t[k]) / hk, a = 1.0 - b;
+    *x = a * y[k] + b * y[k + 1] +
+         ((a * a * a - a) * y2[k] + (b * b * b - b) * y2[k + 1]) * hk * hk / 6.0;
+    *v = (y[k + 1] - y[k]) / hk +
+         (-(3.0 * a * a - 1.0) * y2[k] + (3.0 * b * b - 1.0) * y2[k + 1]) * hk / 6.0;
+}
+
+/* Value and rate with the cut: after `duration` the channel goes on at the rate it had. */
+static void channel_at(const motion *mo, int channel, double t, double *x, double *v)
+{
+    double d = mo->duration;
+    if (!(d > 0.0 && t > d)) {
+        channel_state(mo, channel, t, x, v);
+        return;
+    }
+    channel_state(mo, channel, d, x, v);
+    *x += *v * (t - d);
+}
+
+void motion_position(const motion *mo, double t, double x[3])
+{
+    for (int d = 0; d < 3; d++) {
+        double v;
+        channel_at(mo, d, t, &x[d], &v);
+    }
+}
+
+void motion_angles(const motion *mo, double t, double q[3], double q_dot[3], double q_ddot[3])
+{
+    for (int k = 0; k < 3; k++) {
+        channel_at(mo, MOTION_ROLL_ANGLE + k, t, &q[k], &q_dot[k]);
+        q_ddot[k] = channel_acceleration(mo, MOTION_ROLL_ANGLE + k, t);
+    }
+}
+
+/* ---- the orientation R = R_y(yaw) R_x(pitch) R_z(roll) and its rates -------------------- */
+
+/* The rotation by `angle` about the coordinate axis `axis` (right-handed). */
+static void axis_rotation(int axis, double angle, double r[3][3])
+{
+    int a = (axis + 1) % 3, b = (axis + 2) % 3;
+    double c = cos(angle), s = sin(angle);
+    memset(r, 0, 9 * sizeof(double));
+    r[axis][axis] = 1.0;
+    r[a][a] = c, r[a][b] = -s;
+    r[b][a] = s, r[b][b] = c;
+}
+
+static void mat_mul(double a[3][3], double b[3][3], double out[3][3])
+{
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            out[i][j] = a[i][0] * b[0][j] + a[i][1] * b[1][j] + a[i][2] * b[2][j];
+}
+
+/* R^T v: a vector of the inertial axes in the tank's */
+static void to_tank_axes(double r[3][3], const double v[3], double out[3])
+{
+    for (int j = 0; j < 3; j++) out[j] = r[0][j] * v[0] + r[1][j] * v[1] + r[2][j] * v[2];
+}
+
+/* The chain of elementary rotations about the axes a_k = R_1 ... R_{k-1} e_k, with angles q_k,
+ * has the angular velocity w = sum q_k' a_k and, since a_k' = w_{<k} x a_k with w_{<k} the
+ * velocity of the rotations before k, the angular acceleration
+ * w' = sum (q_k'' a_k + q_k' w_{<k} x a_k) (inertial axes). */
+static void orientation(const double q[3], const double q_dot[3], const double q_ddot[3],
+                        double r[3][3], double w[3], double w_dot[3])
+{
+    /* chain order yaw (y), pitch (x), roll (z); q holds roll, pitch, yaw */
+    static const int axis[3] = {1, 0, 2}, angle_of[3] = {2, 1, 0};
+    double chain[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    for (int d = 0; d < 3; d++) w[d] = w_dot[d] = 0.0;
+    for (int k = 0; k < 3; k++) {
+        int a = axis[k], n = angle_of[k];
+        double ak[3] = {chain[0][a], chain[1][a], chain[2][a]}, turn[3];
+        frame_cross(w, ak, turn); /* w is w_{<k} here */
+        for (int d = 0; d < 3; d++) {
+            w_dot[d] += q_ddot[n] * ak[d] + q_dot[n] * turn[d];
+            w[d] += q_dot[n] * ak[d];
+        }
+        double rk[3][3], next[3][3];
+        axis_rotation(a, q[n], rk);
+        mat_mul(chain, rk, next);
+        memcpy(chain, next, sizeof chain);
+    }
+    memcpy(r, chain, sizeof chain);
+}
+
+void motion_rotation(const motion *mo, double t, double r[3][3])
+{
+    double q[3], q_dot[3], q_ddot[3], w[3], w_dot[3];
+    motion_angles(mo, t, q, q_dot, q_ddot);
+    orientation(q, q_dot, q_ddot, r, w, w_dot);
 }
 
 tank_frame motion_frame(const motion *mo, double gravity, double t)
 {
     tank_frame f = {.gravity = {0.0, -gravity, 0.0}, .rotating = false};
     motion_acceleration(mo, t, f.origin_acc);
+    memcpy(f.center, mo->center, sizeof f.center);
+    if (!mo->rotates) return f;
+    double q[3], q_dot[3], q_ddot[3], r[3][3], w[3], w_dot[3], a[3];
+    motion_angles(mo, t, q, q_dot, q_ddot);
+    orientation(q, q_dot, q_ddot, r, w, w_dot);
+    double g[3] = {0.0, -gravity, 0.0};
+    memcpy(a, f.origin_acc, sizeof a);
+    to_tank_axes(r, g, f.gravity);
+    to_tank_axes(r, a, f.origin_acc);
+    to_tank_axes(r, w, f.omega);
+    to_tank_axes(r, w_dot, f.omega_dot);
+    for (int d = 0; d < 3; d++) f.rotating |= f.omega[d] != 0.0 || f.omega_dot[d] != 0.0;
     return f;
-}
-
-/* Displacement and velocity without the `duration` cut; a table's ends hold still. */
-static void state_at(const motion *mo, double t, double x[3], double v[3])
-{
-    for (int d = 0; d < 3; d++) x[d] = v[d] = 0.0;
-    if (mo->kind == MOTION_NONE) return;
-    if (mo->kind == MOTION_TABLE) {
-        if (t <= mo->t[0] || t >= mo->t[mo->n_knots - 1]) {
-            size_t k = t <= mo->t[0] ? 0 : mo->n_knots - 1;
-            for (int d = 0; d < 3; d++) x[d] = mo->pos[d][k];
-            return;
-        }
-        /* the cubic spline between knots k and k+1, and its derivative */
-        size_t k = knot_interval(mo, t);
-        double hk = mo->t[k + 1] - mo->t[k];
-        double b = (t - mo->t[k]) / hk, a = 1.0 - b;
-        for (int d = 0; d < 3; d++) {
-            const double *y = mo->pos[d], *y2 = mo->acc[d];
-            x[d] = a * y[k] + b * y[k + 1] +
-                   ((a * a * a - a) * y2[k] + (b * b * b - b) * y2[k + 1]) * hk * hk / 6.0;
-            v[d] = (y[k + 1] - y[k]) / hk +
-                   (-(3.0 * a * a - 1.0) * y2[k] + (3.0 * b * b - 1.0) * y2[k + 1]) * hk / 6.0;
-        }
-        return;
-    }
-    int axis = mo->kind == MOTION_SWAY ? 0 : 1;
-    double acc;
-    harmonic(mo, t, &x[axis], &v[axis], &acc);
-}
-
-void motion_position(const motion *mo, double t, double x[3])
-{
-    double d = mo->duration, v[3];
-    if (!(d > 0.0 && t > d)) {
-        state_at(mo, t, x, v);
-        return;
-    }
-    /* after `duration` the acceleration is zero: the tank goes on at the velocity it had */
-    state_at(mo, d, x, v);
-    for (int k = 0; k < 3; k++) x[k] += v[k] * (t - d);
 }
 
 double motion_max_effective_gravity(const motion *mo, double gravity, double t_end)
@@ -123,51 +221,75 @@ double motion_max_effective_gravity(const motion *mo, double gravity, double t_e
     const int samples = 20000;
     double g_max = gravity;
     for (int k = 0; k <= samples; k++) {
-        double a[3];
-        motion_acceleration(mo, horizon * k / samples, a);
-        double gx = -a[0], gy = -gravity - a[1], gz = -a[2];
-        double g = sqrt(gx * gx + gy * gy + gz * gz);
+        double t = horizon * k / samples, g;
+        if (mo->rotates) {
+            tank_frame f = motion_frame(mo, gravity, t);
+            double uniform[3];
+            for (int d = 0; d < 3; d++) uniform[d] = f.gravity[d] - f.origin_acc[d];
+            double w2 = vec3_norm(f.omega) * vec3_norm(f.omega);
+            g = vec3_norm(uniform) + (vec3_norm(f.omega_dot) + w2) * mo->reach;
+        } else {
+            double a[3];
+            motion_acceleration(mo, t, a);
+            double gx = -a[0], gy = -gravity - a[1], gz = -a[2];
+            g = sqrt(gx * gx + gy * gy + gz * gz);
+        }
         if (g > g_max) g_max = g;
     }
     return g_max;
 }
 
-/* Calls visit(x, v, ctx) at the table's knots and 15 points between each two, over
-   [t[0], min(t_end, duration, t[n-1])]: the samples of the table's speed and range. */
+/* Calls visit(x, v, ctx) with the channels' values and rates at the table's knots and 15
+   points between each two, over [t[0], min(t_end, duration, t[n-1])]: the samples of the
+   table's speed and range. */
 static void sample_table(const motion *mo, double t_end,
-                         void (*visit)(const double x[3], const double v[3], void *ctx), void *ctx)
+                         void (*visit)(const double *x, const double *v, void *ctx), void *ctx)
 {
     double stop = t_end;
     if (mo->duration > 0.0 && mo->duration < stop) stop = mo->duration;
     for (size_t k = 0; k + 1 < mo->n_knots && mo->t[k] <= stop; k++)
         for (int j = 0; j <= 16; j++) {
-            double t = mo->t[k] + (mo->t[k + 1] - mo->t[k]) * j / 16.0, x[3], v[3];
+            double t = mo->t[k] + (mo->t[k + 1] - mo->t[k]) * j / 16.0;
+            double x[MOTION_CHANNELS], v[MOTION_CHANNELS];
             if (t > stop) t = stop;
-            /* state_at holds the ends still: sample just inside the last interval */
+            /* channel_state holds the ends still: sample just inside the last interval */
             if (t >= mo->t[mo->n_knots - 1]) t = nextafter(mo->t[mo->n_knots - 1], 0.0);
-            state_at(mo, t, x, v);
+            for (int c = 0; c < MOTION_CHANNELS; c++) channel_state(mo, c, t, &x[c], &v[c]);
             visit(x, v, ctx);
         }
 }
 
-static void keep_speed(const double x[3], const double v[3], void *ctx)
+typedef struct {
+    double reach, most;
+} speed_sample;
+
+/* the centre's speed, and the largest rotation speed at the reach (|w| <= sum |q_k'|) */
+static void keep_speed(const double *x, const double *v, void *ctx)
 {
     (void)x;
-    double s = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]), *most = ctx;
-    if (s > *most) *most = s;
+    speed_sample *s = ctx;
+    double speed = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    if (v[MOTION_ROLL_ANGLE] != 0.0 || v[MOTION_PITCH_ANGLE] != 0.0 || v[MOTION_YAW_ANGLE] != 0.0)
+        speed += s->reach * (fabs(v[MOTION_ROLL_ANGLE]) + fabs(v[MOTION_PITCH_ANGLE]) +
+                             fabs(v[MOTION_YAW_ANGLE]));
+    if (speed > s->most) s->most = speed;
 }
 
 double motion_max_speed(const motion *mo, double t_end)
 {
     if (mo->kind == MOTION_NONE) return 0.0;
-    if (mo->kind != MOTION_TABLE)
-        return fabs(mo->amplitude) * sqrt(mo->omega * mo->omega + mo->decay * mo->decay);
-    double most = 0.0;
-    sample_table(mo, t_end, keep_speed, &most);
-    return most;
+    if (mo->kind != MOTION_TABLE) {
+        double rate = sqrt(mo->omega * mo->omega + mo->decay * mo->decay), speed = 0.0;
+        if (mo->translation >= 0) speed += fabs(mo->amplitude) * rate;
+        if (mo->rotation >= 0) speed += fabs(mo->angle) * rate * mo->reach;
+        return speed;
+    }
+    speed_sample s = {mo->reach, 0.0};
+    sample_table(mo, t_end, keep_speed, &s);
+    return s.most;
 }
 
-static void keep_range(const double x[3], const double v[3], void *ctx)
+static void keep_range(const double *x, const double *v, void *ctx)
 {
     (void)v;
     double(*range)[3] = ctx; /* range[0]: lowest, range[1]: highest */
@@ -182,7 +304,7 @@ void motion_max_excursion(const motion *mo, double t_end, double out[3])
     out[0] = out[1] = out[2] = 0.0;
     if (mo->kind == MOTION_NONE) return;
     if (mo->kind != MOTION_TABLE) {
-        out[mo->kind == MOTION_SWAY ? 0 : 1] = fabs(mo->amplitude);
+        if (mo->translation >= 0) out[mo->translation] = fabs(mo->amplitude);
         return;
     }
     double range[2][3] = {{INFINITY, INFINITY, INFINITY}, {-INFINITY, -INFINITY, -INFINITY}};
@@ -210,29 +332,102 @@ static int spline_second_derivatives(const double *t, const double *y, size_t n,
     return 0;
 }
 
-static int append_knot(motion *mo, size_t *cap, const double v[4])
+static const char *const channel_names[MOTION_CHANNELS] = {"x", "y", "z", "roll", "pitch", "yaw"};
+
+/* The table's columns: channel[k] is the channel of column k + 1 (column 0 is t). */
+typedef struct {
+    int n, channel[MOTION_CHANNELS];
+} table_columns;
+
+/* The header's fields when they are t and then channel names, each at most once; false
+ * otherwise (a header of other words: the columns are then t,x,y[,z] by position). */
+static bool named_columns(const char *header, table_columns *cols)
+{
+    char text[4096];
+    snprintf(text, sizeof text, "%s", header);
+    cols->n = -1; /* t first */
+    int seen = 0;
+    for (char *save = NULL, *field = strtok_r(text, ",\r\n", &save); field;
+         field = strtok_r(NULL, ",\r\n", &save)) {
+        while (isspace((unsigned char)*field)) field++;
+        size_t len = strlen(field);
+        while (len > 0 && isspace((unsigned char)field[len - 1])) field[--len] = '\0';
+        if (cols->n < 0) {
+            if (strcmp(field, "t") != 0) return false;
+            cols->n = 0;
+            continue;
+        }
+        int c = 0;
+        while (c < MOTION_CHANNELS && strcmp(field, channel_names[c]) != 0) c++;
+        if (c == MOTION_CHANNELS || (seen & (1 << c)) || cols->n == MOTION_CHANNELS) return false;
+        seen |= 1 << c;
+        cols->channel[cols->n++] = c;
+    }
+    return cols->n > 0;
+}
+
+/* The values of one named row, exactly 1 + cols->n numbers separated by commas. */
+static bool named_row(const char *line, const table_columns *cols, double *v)
+{
+    const char *p = line;
+    for (int k = 0; k <= cols->n; k++) {
+        char *end;
+        v[k] = strtod(p, &end);
+        if (end == p || !isfinite(v[k])) return false;
+        p = end;
+        while (isspace((unsigned char)*p)) p++;
+        if (k < cols->n && *p++ != ',') return false;
+    }
+    return *p == '\0';
+}
+
+static int append_knot(motion *mo, size_t *cap, const table_columns *cols, const double *v)
 {
     if (mo->n_knots == *cap) {
         size_t n = *cap ? 2 * *cap : 256;
         double *t = realloc(mo->t, n * sizeof *t);
         if (!t) return -1;
         mo->t = t;
-        for (int d = 0; d < 3; d++) {
-            double *p = realloc(mo->pos[d], n * sizeof *p);
+        for (int k = 0; k < cols->n; k++) {
+            int c = cols->channel[k];
+            double *p = realloc(mo->pos[c], n * sizeof *p);
             if (!p) return -1;
-            mo->pos[d] = p;
+            mo->pos[c] = p;
         }
         *cap = n;
     }
     mo->t[mo->n_knots] = v[0];
-    for (int d = 0; d < 3; d++) mo->pos[d][mo->n_knots] = v[d + 1];
+    for (int k = 0; k < cols->n; k++) mo->pos[cols->channel[k]][mo->n_knots] = v[k + 1];
     mo->n_knots++;
     return 0;
 }
 
-/* CSV with header t,x,y[,z]; positions in m. From the text, if given, else from the file
- * `path` (named in the messages either way). */
-static int read_table(motion *mo, const char *path, const char *text, char *err, size_t err_len)
+/* One data row into v (t first, then the columns' values): by name, or t,x,y[,z] by position
+ * (z is 0 when absent). Returns false with a message when the row does not read. */
+static bool table_row(const char *line, bool named, const table_columns *cols, double *v,
+                      const char *path, size_t lineno, char *err, size_t err_len)
+{
+    if (named) {
+        if (named_row(line, cols, v)) return true;
+        char spelled[96] = "t";
+        for (int k = 0; k < cols->n; k++)
+            snprintf(spelled + strlen(spelled), sizeof spelled - strlen(spelled), ",%s",
+                     channel_names[cols->channel[k]]);
+        snprintf(err, err_len, "%s:%zu: expected %d numbers %s (s, m, rad), as the header names",
+                 path, lineno, cols->n + 1, spelled);
+        return false;
+    }
+    v[3] = 0.0;
+    if (sscanf(line, "%lf ,%lf ,%lf ,%lf", &v[0], &v[1], &v[2], &v[3]) >= 3) return true;
+    snprintf(err, err_len, "%s:%zu: expected t,x,y[,z] (numbers, m and s)", path, lineno);
+    return false;
+}
+
+/* CSV whose header names the columns, t then any of x,y,z (m) and roll,pitch,yaw (rad); a
+ * header of other words leaves t,x,y[,z] by position. From the text, if given, else from the
+ * file `path` (named in the messages either way). */
+static int read_table(motion *mo, const char *path, const char *text, int dim, char *err,
+                      size_t err_len)
 {
     FILE *f = text ? fmemopen((void *)text, strlen(text), "r") : fopen(path, "r");
     if (!f) {
@@ -242,25 +437,25 @@ static int read_table(motion *mo, const char *path, const char *text, char *err,
     char line[4096];
     size_t cap = 0, lineno = 0;
     int status = 0;
-    while (fgets(line, sizeof line, f)) {
+    bool named = false;
+    table_columns cols = {3, {MOTION_X, MOTION_Y, MOTION_Z}};
+    while (status == 0 && fgets(line, sizeof line, f)) {
         lineno++;
-        if (lineno == 1 || line[0] == '#' || line[0] == '\n') continue; /* header */
-        double v[4] = {0, 0, 0, 0};
-        int n = sscanf(line, "%lf ,%lf ,%lf ,%lf", &v[0], &v[1], &v[2], &v[3]);
-        if (n < 3) {
-            snprintf(err, err_len, "%s:%zu: expected t,x,y[,z] (numbers, m and s)", path, lineno);
-            status = 2;
-            break;
+        if (lineno == 1) { /* the header */
+            table_columns given;
+            if ((named = named_columns(line, &given))) cols = given;
+            continue;
         }
-        if (mo->n_knots > 0 && !(v[0] > mo->t[mo->n_knots - 1])) {
+        if (line[0] == '#' || line[0] == '\n') continue;
+        double v[MOTION_CHANNELS + 1];
+        if (!table_row(line, named, &cols, v, path, lineno, err, err_len))
+            status = 2;
+        else if (mo->n_knots > 0 && !(v[0] > mo->t[mo->n_knots - 1])) {
             snprintf(err, err_len, "%s:%zu: times must increase", path, lineno);
             status = 2;
-            break;
-        }
-        if (append_knot(mo, &cap, v)) {
+        } else if (append_knot(mo, &cap, &cols, v)) {
             snprintf(err, err_len, "%s: out of memory", path);
             status = 2;
-            break;
         }
     }
     fclose(f);
@@ -268,27 +463,72 @@ static int read_table(motion *mo, const char *path, const char *text, char *err,
         snprintf(err, err_len, "%s: a motion table needs at least 4 rows", path);
         status = 2;
     }
-    for (int d = 0; status == 0 && d < 3; d++) {
-        mo->acc[d] = malloc(mo->n_knots * sizeof(double));
-        if (!mo->acc[d] || spline_second_derivatives(mo->t, mo->pos[d], mo->n_knots, mo->acc[d])) {
+    if (status == 0 && dim == 2 && (mo->pos[MOTION_PITCH_ANGLE] || mo->pos[MOTION_YAW_ANGLE])) {
+        snprintf(err, err_len,
+                 "%s: pitch and yaw turn the tank out of the x-y plane: 3D only (a 2D tank has "
+                 "t,x,y,roll)",
+                 path);
+        status = 2;
+    }
+    for (int c = 0; status == 0 && c < MOTION_CHANNELS; c++) {
+        if (!mo->pos[c]) continue;
+        mo->acc[c] = malloc(mo->n_knots * sizeof(double));
+        if (!mo->acc[c] || spline_second_derivatives(mo->t, mo->pos[c], mo->n_knots, mo->acc[c])) {
             snprintf(err, err_len, "%s: out of memory", path);
             status = 2;
         }
+        if (c >= MOTION_ROLL_ANGLE) mo->rotates = true;
     }
     return status;
 }
 
+/* Largest distance from the rotation axis's point to a corner of the tank. */
+static double reach_of(const config *cfg, const double center[3])
+{
+    const double size[3] = {cfg->tank_length, cfg->tank_height,
+                            cfg->dim == 3 ? cfg->tank_width : center[2]};
+    double most = 0.0;
+    for (int corner = 0; corner < 8; corner++) {
+        double r2 = 0.0;
+        for (int d = 0; d < 3; d++) {
+            double dx = ((corner >> d) & 1 ? size[d] : 0.0) - center[d];
+            r2 += dx * dx;
+        }
+        if (r2 > most) most = r2;
+    }
+    return sqrt(most);
+}
+
 int motion_init(motion *mo, const config *cfg, char *err, size_t err_len)
 {
+    static const int translation_of[] = {[MOTION_SWAY] = MOTION_X,
+                                         [MOTION_HEAVE] = MOTION_Y,
+                                         [MOTION_SWAY_ROLL] = MOTION_X,
+                                         [MOTION_HEAVE_ROLL] = MOTION_Y};
+    static const int rotation_of[] = {[MOTION_ROLL] = MOTION_ROLL_ANGLE,
+                                      [MOTION_PITCH] = MOTION_PITCH_ANGLE,
+                                      [MOTION_YAW] = MOTION_YAW_ANGLE,
+                                      [MOTION_SWAY_ROLL] = MOTION_ROLL_ANGLE,
+                                      [MOTION_HEAVE_ROLL] = MOTION_ROLL_ANGLE};
     memset(mo, 0, sizeof *mo);
     mo->kind = cfg->motion;
+    mo->translation = mo->rotation = -1;
+    if (mo->kind == MOTION_SWAY || mo->kind == MOTION_HEAVE || mo->kind == MOTION_SWAY_ROLL ||
+        mo->kind == MOTION_HEAVE_ROLL)
+        mo->translation = translation_of[mo->kind];
+    if (mo->kind >= MOTION_ROLL) mo->rotation = rotation_of[mo->kind];
+    mo->rotates = mo->rotation >= 0;
     mo->amplitude = cfg->amplitude;
+    mo->angle = cfg->angle;
     mo->omega = cfg->period > 0.0 ? 2.0 * M_PI / cfg->period : 0.0;
     mo->decay = cfg->decay;
     mo->phase = cfg->phase;
+    mo->angle_phase = cfg->angle_phase;
     mo->duration = cfg->duration;
+    memcpy(mo->center, cfg->motion_center, sizeof mo->center);
+    mo->reach = reach_of(cfg, mo->center);
     if (mo->kind != MOTION_TABLE) return 0;
-    int status = read_table(mo, cfg->motion_file, cfg->motion_table, err, err_len);
+    int status = read_table(mo, cfg->motion_file, cfg->motion_table, cfg->dim, err, err_len);
     if (status) motion_free(mo);
     return status;
 }
@@ -296,9 +536,9 @@ int motion_init(motion *mo, const config *cfg, char *err, size_t err_len)
 void motion_free(motion *mo)
 {
     free(mo->t);
-    for (int d = 0; d < 3; d++) {
-        free(mo->pos[d]);
-        free(mo->acc[d]);
+    for (int c = 0; c < MOTION_CHANNELS; c++) {
+        free(mo->pos[c]);
+        free(mo->acc[c]);
     }
     memset(mo, 0, sizeof *mo);
 }

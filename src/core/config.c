@@ -55,15 +55,18 @@ _Static_assert(sizeof(liquid_shape_kind) == sizeof(int), "enum size");
         sec, nam, kind, flags, def, offsetof(config, field), sizeof(((config *)0)->field), rng,    \
             words, allowed, meaning, NULL, NULL                                                    \
     }
-/* a list of the [probes] section, read and written by its own functions */
-#define LIST_KEY(sec, nam, def, field, set, format, allowed, meaning)                              \
+/* a list of numbers, read and written by its own functions */
+#define LIST_KEY_FLAGS(sec, nam, flags, def, field, set, format, allowed, meaning)                 \
     {                                                                                              \
-        sec, nam, INI_CUSTOM, INI_LIST, def, offsetof(config, field),                              \
+        sec, nam, INI_CUSTOM, INI_LIST | (flags), def, offsetof(config, field),                    \
             sizeof(((config *)0)->field), ANY, NULL, allowed, meaning, set, format                 \
     }
+#define LIST_KEY(sec, nam, def, field, set, format, allowed, meaning)                              \
+    LIST_KEY_FLAGS(sec, nam, 0, def, field, set, format, allowed, meaning)
 
 static const char *const bool_words[] = {"false", "true", NULL};
-static const char *const motion_words[] = {"none", "sway", "heave", "table", NULL};
+static const char *const motion_words[] = {"none",  "sway", "heave",     "table",      "roll",
+                                           "pitch", "yaw",  "sway+roll", "heave+roll", NULL};
 static const char *const scheme_words[] = {"standard",  "delta",          "delta-plus",
                                            "delta-ale", "delta-plus-ale", NULL};
 static const char *const edbc_words[] = {"false", "true", "with-eta0", "auto", NULL};
@@ -227,6 +230,36 @@ static void format_points(const void *target, const ini_key *k, char *buf, size_
     format_point_list(cfg, cfg->dim, buf, size);
 }
 
+/* "x y[ z]": the rotation axis's point; z is filled in by resolve_defaults when absent. */
+static bool set_center(ini_session *ctx, const ini_key *k, const char *s, char *why, size_t n)
+{
+    double x[3] = {0.0, 0.0, NAN};
+    int c = 0;
+    for (const char *p = ini_skip_space(s); *p; c++) {
+        if (c == 3) {
+            snprintf(why, n, "more than 3 coordinates; must be %s", k->allowed);
+            return false;
+        }
+        if (!list_number(k, &p, "", &x[c], why, n)) return false;
+    }
+    if (c < 2) {
+        snprintf(why, n, "%d coordinate%s; must be %s", c, c == 1 ? "" : "s", k->allowed);
+        return false;
+    }
+    memcpy(((config *)ini_target(ctx))->motion_center, x, sizeof x);
+    return true;
+}
+
+static void format_center(const void *target, const ini_key *k, char *buf, size_t size)
+{
+    (void)k;
+    const config *cfg = target;
+    size_t used = 0;
+    buf[0] = '\0';
+    for (int d = 0; d < cfg->dim && used < size; d++)
+        if (!append_number(buf, size, &used, d ? " " : "", cfg->motion_center[d])) return;
+}
+
 /* The case file, section by section (docs/case-file.md; config_write follows this table). */
 static const ini_key keys[] = {
     KEY("case", "name", INI_NAME, INI_DERIVED, "<file base name>", name, ANY, NULL,
@@ -272,22 +305,32 @@ static const ini_key keys[] = {
         "an acceleration >= 0 (m/s^2, along -y)", "g: magnitude of gravity, pointing along -y"),
 
     KEY("motion", "type", INI_WORD, 0, "none", motion, ANY, motion_words,
-        "one of none | sway | heave | table",
-        "prescribed tank motion: none, sway (x), heave (y) or a table"),
+        "one of none | sway | heave | table | roll | pitch | yaw | sway+roll | heave+roll",
+        "prescribed tank motion: sway (x), heave (y), roll (about z), pitch (about x), yaw "
+        "(about y), a translation and roll together, or a table"),
     KEY("motion", "amplitude", INI_REAL, 0, "0.0", amplitude, NON_NEGATIVE, NULL,
         "a length >= 0 (m)", "A: amplitude of the sway or heave displacement"),
+    KEY("motion", "angle", INI_REAL, 0, "0.0", angle, NON_NEGATIVE, NULL, "an angle >= 0 (rad)",
+        "Theta: amplitude of the roll, pitch or yaw angle"),
     KEY("motion", "period", INI_REAL, 0, "0.0", period, NON_NEGATIVE, NULL,
-        "a time >= 0 (s), > 0 when type is sway or heave", "T: period of the sway or heave motion"),
+        "a time >= 0 (s), > 0 when the motion is periodic (every type but none and table)",
+        "T: period of the motion"),
     KEY("motion", "decay", INI_REAL, 0, "0.0", decay, NON_NEGATIVE, NULL, "a rate >= 0 (1/s)",
         "l: the amplitude decays as A exp(-l t)"),
     KEY("motion", "phase", INI_REAL, 0, "0.0", phase, ANY, NULL, "an angle (rad)",
         "phi: phase of the motion at t = 0, added to 2 pi t / T"),
+    KEY("motion", "angle_phase", INI_REAL, 0, "0.0", angle_phase, ANY, NULL, "an angle (rad)",
+        "phase of the rotation beyond phi: the angle's phase is phi + angle_phase"),
+    LIST_KEY_FLAGS("motion", "center", INI_DERIVED, "<tank bottom centre>", motion_center,
+                   set_center, format_center, "a point 'x y[ z]' (m) in tank coordinates",
+                   "point of the rotation axis (roll, pitch, yaw, table angles); in 3D a "
+                   "missing z is the tank's mid-width"),
     KEY("motion", "duration", INI_REAL, 0, "0.0", duration, NON_NEGATIVE, NULL,
         "a time >= 0 (s; 0 = whole run)",
         "time after which the tank stops accelerating (keeps its velocity)"),
     KEY("motion", "file", INI_PATH, 0, "", motion_file, ANY, NULL,
-        "a readable CSV file t,x,y[,z] (required when type = table)",
-        "CSV of the tank displacement t,x,y[,z] for type = table"),
+        "a readable CSV file t,x,y[,z][,roll,pitch,yaw] (required when type = table)",
+        "CSV of the tank displacement and angles against time for type = table"),
 
     KEY("model", "scheme", INI_WORD, 0, "delta-plus-ale", scheme, ANY, scheme_words,
         "one of standard | delta | delta-plus | delta-ale | delta-plus-ale",
@@ -404,6 +447,13 @@ static void resolve_defaults(ini_session *ctx)
         if (!ini_apply(ctx, name, text, 0)) return; /* cannot happen: default_name makes a name */
     }
     if (!ini_given(ctx, ini_key_of(ctx, "liquid", "length"))) cfg->liquid_length = cfg->tank_length;
+    double *center = cfg->motion_center;
+    if (!ini_given(ctx, ini_key_of(ctx, "motion", "center"))) { /* the bottom centre */
+        center[0] = 0.5 * cfg->tank_length;
+        center[1] = 0.0;
+        center[2] = NAN;
+    }
+    if (isnan(center[2])) center[2] = cfg->dim == 3 ? 0.5 * cfg->tank_width : 0.0;
     if (!ini_given(ctx, ini_key_of(ctx, "numerics", "h_over_dr")))
         cfg->h_over_dr = cfg->dim == 3 ? 1.5 : 2.0;
     /* the scheme-dependent defaults (docs/volume-correction.md, "Defaults") */
@@ -468,7 +518,15 @@ static void check_motion(ini_session *ctx)
     config *cfg = ini_target(ctx);
     char why[CONFIG_PATH_MAX + 256];
     const char *type = config_motion_name(cfg->motion);
-    if ((cfg->motion == MOTION_SWAY || cfg->motion == MOTION_HEAVE) && !(cfg->period > 0.0)) {
+    bool periodic = cfg->motion != MOTION_NONE && cfg->motion != MOTION_TABLE;
+    if (cfg->dim == 2 && (cfg->motion == MOTION_PITCH || cfg->motion == MOTION_YAW)) {
+        snprintf(why, sizeof why,
+                 "%s turns the tank out of the x-y plane: 3D only (case.dim = 3); a 2D tank rolls",
+                 type);
+        ini_fail_key(ctx, ini_key_of(ctx, "motion", "type"), why);
+        return;
+    }
+    if (periodic && !(cfg->period > 0.0)) {
         snprintf(why, sizeof why, "must be a time > 0 (s) when motion.type = %s", type);
         ini_fail_key(ctx, ini_key_of(ctx, "motion", "period"), why);
         return;

@@ -18,7 +18,19 @@ typedef enum {
     SCHEME_DELTA_PLUS_ALE
 } scheme_kind;
 
-typedef enum { MOTION_NONE, MOTION_SWAY, MOTION_HEAVE, MOTION_TABLE } motion_kind;
+/* The tank's prescribed motion: a translation (sway along x, heave along y), a rotation (roll
+ * about z, pitch about x, yaw about y, through motion.center), the two superposed, or a table. */
+typedef enum {
+    MOTION_NONE,
+    MOTION_SWAY,
+    MOTION_HEAVE,
+    MOTION_TABLE,
+    MOTION_ROLL,
+    MOTION_PITCH,
+    MOTION_YAW,
+    MOTION_SWAY_ROLL,
+    MOTION_HEAVE_ROLL
+} motion_kind;
 /* EDBC_AUTO is resolved by config_load (with-eta0 for delta-plus-ALE, false otherwise) and
  * never reaches the solver. */
 typedef enum { EDBC_OFF, EDBC_ON, EDBC_WITH_ETA0, EDBC_AUTO } edbc_mode;
@@ -51,6 +63,8 @@ typedef struct {
     /* [motion] */
     motion_kind motion;
     double amplitude, period, decay, phase, duration;
+    double angle, angle_phase; /* rotation amplitude (rad) and its phase beyond `phase` */
+    double motion_center[3];   /* the rotation axis's point, tank coordinates (m) */
     char motion_file[CONFIG_PATH_MAX];
     /* not a key: the table's text when a run holds it (read once at the start, or stored in
        the checkpoint), parsed instead of motion_file, which an edit could change under a

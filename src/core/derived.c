@@ -142,10 +142,17 @@ void derived_compute(const config *cfg, const derived_inputs *in, derived *dv)
         dv->mass_liquid = cfg->density * cfg->liquid_length * cfg->liquid_height * width;
     else
         dv->mass_liquid = cfg->density * dv->v0;
-    int periodic = (cfg->motion == MOTION_SWAY || cfg->motion == MOTION_HEAVE) && cfg->period > 0;
+    int periodic = cfg->motion != MOTION_NONE && cfg->motion != MOTION_TABLE && cfg->period > 0;
     dv->omega = periodic ? 2.0 * M_PI / cfg->period : 0.0;
-    double aw = cfg->amplitude * dv->omega;
-    dv->d_energy = 0.5 * dv->mass_liquid * aw * aw;
+    bool rotation = cfg->motion >= MOTION_ROLL;
+    bool translation =
+        !rotation || cfg->motion == MOTION_SWAY_ROLL || cfg->motion == MOTION_HEAVE_ROLL;
+    /* the tank's speed scale: A w of a translation; for a rotation g Theta / w, the speed
+       amplitude of the sway whose acceleration g Theta equals the tilted gravity's pull along
+       the tank, a rotation's main forcing (docs/case-file.md) */
+    double aw = translation ? cfg->amplitude * dv->omega : 0.0;
+    double turn = rotation && dv->omega > 0.0 ? cfg->gravity * cfg->angle / dv->omega : 0.0;
+    dv->d_energy = 0.5 * dv->mass_liquid * (aw * aw + turn * turn);
     dv->d_power = periodic ? dv->d_energy / cfg->period : 0.0;
     dv->dissipation_norm = cfg->decay > 0.0 ? dv->mass_liquid * cfg->gravity * 2.0 * cfg->amplitude
                                             : (periodic ? dv->d_energy : 0.0);

@@ -37,7 +37,8 @@ typedef struct {
                                            heave (parametric, half the forcing frequency),
                                            else t_sloshing1; the adaptive eta control averages
                                            eps_V1 over it */
-    double d_energy, d_power;           /* dE = M_L (A w)^2 / 2, dW = dE / T (Table 3) */
+    double d_energy, d_power;           /* dE = M_L (A w)^2 / 2 (a rotation adds (g Theta / w)^2),
+                                           dW = dE / T (Table 3) */
     double dissipation_norm;            /* the energy per period that normalises dissipation.csv
                                            (theory §10): dE, so that power_norm = P / dW; with
                                            motion.decay > 0, dE_P = M_L g 2A (UPM, Fig. 27) */

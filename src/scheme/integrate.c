@@ -57,18 +57,34 @@ static void rk_arrays(solver *s, double **y, double **rate)
     PARTICLE_INTEGRATED(RK_SCALAR, RK_VECTOR)
 }
 
-/* Input power -sum m a_tank . u (theory §10) */
-static double input_power(solver *s, double t)
+/* Input power of the tank's motion (theory §10): the power of the body force beyond the
+ * level gravity (0, -g, 0) whose potential epot counts, sum m (f(r, u) - g_level) . u. For a
+ * tank that translates that is -sum m a0 . u. A rotating one adds its turned gravity and the
+ * Euler and centrifugal terms; the Coriolis term does no work and is left out. */
+static double input_power(solver *s, const tank_frame *frame)
 {
     if (s->mo.kind == MOTION_NONE) return 0.0;
-    double a3[3];
-    motion_acceleration(&s->mo, t, a3);
     vec a;
-    for (int d = 0; d < DIM; d++) a.c[d] = a3[d];
+    for (int d = 0; d < DIM; d++) a.c[d] = frame->origin_acc[d];
     particles *p = &s->p;
+    if (!s->mo.rotates) {
 #pragma omp parallel for schedule(static)
-    for (size_t i = 0; i < p->n_fluid; i++)
-        s->scratch[i] = -p->m[i] * vec_dot(a, vec_load(p->u, i));
+        for (size_t i = 0; i < p->n_fluid; i++)
+            s->scratch[i] = -p->m[i] * vec_dot(a, vec_load(p->u, i));
+        return reduce_sum(s->scratch, p->n_fluid);
+    }
+    vec tilt; /* the frame's gravity less the level one */
+    for (int d = 0; d < DIM; d++) tilt.c[d] = frame->gravity[d] - (d == 1 ? -s->cfg->gravity : 0.0);
+    vec uniform = vec_sub(tilt, a);
+#pragma omp parallel for schedule(static)
+    for (size_t i = 0; i < p->n_fluid; i++) {
+        double r[3] = {0.0, 0.0, 0.0}, rotation[3];
+        for (int d = 0; d < DIM; d++) r[d] = p->x[d][i] - frame->center[d];
+        frame_rotation_force(frame, r, rotation);
+        vec f = uniform;
+        for (int d = 0; d < DIM; d++) f.c[d] += rotation[d];
+        s->scratch[i] = p->m[i] * vec_dot(f, vec_load(p->u, i));
+    }
     return reduce_sum(s->scratch, p->n_fluid);
 }
 
@@ -130,7 +146,7 @@ void solver_advance(solver *s, double t_stop)
         }
         rhs_compute(&s->pp, p, &s->nl, &frame, s->eta_control.eta, &s->k);
         if (stage == 0) s->max_acc = max_acceleration(s);
-        work += stage_w[stage] * input_power(s, ts);
+        work += stage_w[stage] * input_power(s, &frame);
         if (s->pp.surface_tension) work_st += stage_w[stage] * surface_tension_power(p, s->scratch);
         double w = stage_w[stage];
 #pragma omp parallel for schedule(static)

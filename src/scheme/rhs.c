@@ -2,10 +2,8 @@
 #include "scheme/rhs.h"
 #include "physics/ale.h"
 #include "physics/continuity.h"
-#include "physics/pressure.h"
-#include "physics/viscosity.h"
 #include "physics/volume_correction.h"
-#include "core/pair.h"
+#include "scheme/momentum.h"
 
 /* One particle's sums. `les`, `ale` and `variable_mass` are compile-time constants at each
  * call below, so the loop is specialised once per loop, never tested per pair
@@ -18,10 +16,9 @@ static inline void rhs_particle(const physics_params *pp, const particles *p,
                                 double eta, const rates *out)
 {
     const kernel *k = &pp->k;
-    vec xi = vec_load(p->x, i), ui = vec_load(p->u, i), uwi = vec_load(p->u_wall, i);
-    vec dui = vec_load(p->shift, i);
-    double rhoi = p->rho[i], pi = p->p[i], nuti = p->nu_t[i], vi = p->vol[i];
-    double mu = pp->rho0 * pp->nu;
+    momentum_particle mi = momentum_particle_of(pp, p, i);
+    vec xi = vec_load(p->x, i), ui = mi.u, dui = mi.shift;
+    double rhoi = p->rho[i], vi = p->vol[i];
     double drho = 0.0, mass_flux = 0.0;
     vec force = vec_zero(); /* per unit volume */
     pair pr;
@@ -36,14 +33,9 @@ static inline void rhs_particle(const physics_params *pp, const particles *p,
             double flux = ale_flux_pair(rhoi, dui, p->rho[j], duj, pr.r_ji, pr.f);
             drho += flux * vj;
             if (variable_mass && !particle_is_wall_image(p, j)) mass_flux += flux * vi * vj;
-            force = vec_add(force, ale_momentum_pair(p->rho[j], u_ji, duj, pr.r_ji, pr.f, vj));
         }
         drho += continuity_pair(rhoi, transport_ji, pr.r_ji, pr.f, vj);
-        force = vec_add(force, pressure_pair(pi, p->p[j], pr.r_ji, pr.f, vj));
-        double mu_eff = mu;
-        if (les) mu_eff += pp->rho0 * harmonic_mean_capped(nuti, p->nu_t[j], pp->nu_t_cap);
-        vec uw_ji = vec_sub(vec_load(p->u_wall, j), uwi);
-        force = vec_add(force, viscosity_pair(mu_eff, uw_ji, pr.r_ji, pr.r2, pr.f, vj));
+        force = momentum_pair_add(force, pp, p, &mi, &pr, les, ale);
     }
     vec transport = vec_add(ui, dui);
     if (pp->volume_correction) { /* the particle moves through the density field */
