@@ -148,8 +148,8 @@ static void plot_and_check(const char *dir, const char *run_dir, const char *con
     snprintf(images_in, sizeof images_in, "%s/images", run_dir);
     path_in(dir, images_in, images, sizeof images);
     assert_true(exists(images, "plot.gp")); /* kept, for a user to edit and rerun */
-    static const char *const all[] = {"volume.png", "energy.png",      "density.png",
-                                      "liquid.png", "dissipation.png", "probes.png"};
+    static const char *const all[] = {"volume.png",      "energy.png", "density.png", "liquid.png",
+                                      "dissipation.png", "probes.png", "loads.png"};
     for (size_t k = 0; k < sizeof all / sizeof all[0]; k++) {
         bool want = false;
         for (int i = 0; expected[i]; i++) want |= !strcmp(expected[i], all[k]);
@@ -207,6 +207,7 @@ static void test_plot_real_run(void **state)
     int n = 4;
     if (csv_rows(run, "dissipation.csv") > 0) expected[n++] = "dissipation.png";
     if (csv_rows(run, "probes.csv") > 0) expected[n++] = "probes.png";
+    expected[n++] = "loads.png"; /* every run writes loads.csv */
     plot_and_check(dir, "run", expected);
     char images[1024];
     path_in(run, "images", images, sizeof images);
@@ -255,6 +256,13 @@ static const char probes[] = "t,gauge_1,pressure_1,pressure_2\n"
                              "0.1,0.36,2460,1010\n"
                              "0.2,0.37,2470,1030\n";
 
+/* A 2D run's loads: the moment is mz alone. */
+static const char loads[] = "t,fx,fy,mx,my,mz,fx_inertial,fy_inertial,mx_inertial,my_inertial,"
+                            "mz_inertial,px,py,bx,by\n"
+                            "0,0,-392,0,0,0,0,-392,0,0,0,0,0,0,-392\n"
+                            "0.1,5,-393,0,0,1.5,5,-393,0,0,1.5,0.1,0,4,-392\n"
+                            "0.2,-3,-391,0,0,-1,-3,-391,0,0,-1,0.05,0,-2,-392\n";
+
 static void write_run(const char *dir, const char *name, bool optional_files)
 {
     char run[1024];
@@ -265,10 +273,12 @@ static void write_run(const char *dir, const char *name, bool optional_files)
     write_file(run, "events.csv", events);
     write_file(run, "dissipation.csv", dissipation);
     write_file(run, "probes.csv", probes);
+    write_file(run, "loads.csv", loads);
 }
 
-static const char *const every_plot[] = {
-    "volume.png", "energy.png", "density.png", "liquid.png", "probes.png", "dissipation.png", NULL};
+static const char *const every_plot[] = {"volume.png", "energy.png", "density.png",
+                                         "liquid.png", "probes.png", "dissipation.png",
+                                         "loads.png",  NULL};
 
 /* Without case.ini, in a folder whose name needs quoting in a gnuplot script (the script
  * refers to its data by relative paths, so no name reaches gnuplot but in a title). */

@@ -27,7 +27,7 @@ typedef struct {
     char title_name[CONFIG_NAME_MAX]; /* the case name, else the directory's name */
     bool has_case;
     config cfg; /* case.ini, when has_case */
-    csv_summary series, dissipation, probes;
+    csv_summary series, dissipation, probes, loads;
     double switch_t[PLOT_MAX_SWITCH_MARKS]; /* times of the eta_switch events */
     int n_switch;
 } plot_inputs;
@@ -135,6 +135,8 @@ static int plot_read_inputs(const char *dir, plot_inputs *in, plot_report *repor
             plot_read_optional(dir, "dissipation.csv", &in->dissipation, NULL, NULL, err, err_len);
     if (!status)
         status = plot_read_optional(dir, "probes.csv", &in->probes, NULL, NULL, err, err_len);
+    if (!status)
+        status = plot_read_optional(dir, "loads.csv", &in->loads, NULL, NULL, err, err_len);
     return status;
 }
 
@@ -143,6 +145,7 @@ static void plot_inputs_free(plot_inputs *in)
     csv_summary_free(&in->series);
     csv_summary_free(&in->dissipation);
     csv_summary_free(&in->probes);
+    csv_summary_free(&in->loads);
 }
 
 /* ---- the gnuplot script --------------------------------------------------------------------- */
@@ -396,15 +399,54 @@ static bool gp_plot_probes(FILE *f, const plot_inputs *in)
     return true;
 }
 
+/* The force and the moment the liquid exerts on the tank (docs/loads.md), tank axes: one panel
+ * each; a 2D run's moment is mz alone. */
+static bool gp_plot_loads(FILE *f, const plot_inputs *in)
+{
+    if (!csv_summary_values(&in->loads, "fx") || csv_summary_column(&in->loads, "t") < 0)
+        return false;
+    static const char data[] = "../loads.csv";
+    bool three_d = csv_summary_values(&in->loads, "fz") != NULL;
+    gp_begin_plot(f, in, "loads.png", 900, "loads", "");
+    fputs("set multiplot layout 2,1 title ", f);
+    char title[CONFIG_NAME_MAX + 64];
+    snprintf(title, sizeof title, "%s: the liquid's force and moment on the tank (tank axes)",
+             in->title_name);
+    gp_put_quoted(f, title);
+    fputs(" noenhanced\nunset title\n", f);
+    const curve forces[] = {
+        {"fx", "", "", "lines lw 2", "F_x"},
+        {"fy", "", "", "lines lw 2", "F_y"},
+        {"fz", "", "", "lines lw 2", "F_z"},
+    };
+    const curve moments[] = {
+        {"mz", "", "", "lines lw 2", "M_z"},
+        {"mx", "", "", "lines lw 2", "M_x"},
+        {"my", "", "", "lines lw 2", "M_y"},
+    };
+    fputs(three_d ? "set ylabel 'force (N)'\n" : "set ylabel 'force per unit width (N/m)'\n", f);
+    gp_put_curves(f, data, &in->loads, forces, three_d ? 3 : 2);
+    fputs(three_d ? "\nset ylabel 'moment about motion.center (N m)'\n"
+                  : "\nset ylabel 'moment about motion.center per unit width (N m/m)'\n",
+          f);
+    gp_put_curves(f, data, &in->loads, moments, three_d ? 3 : 1);
+    fputs("\nunset multiplot\n", f);
+    return true;
+}
+
 typedef bool plot_writer(FILE *f, const plot_inputs *in);
 
 static const struct {
     const char *png;
     plot_writer *write;
 } plots[] = {
-    {"volume.png", gp_plot_volume},           {"energy.png", gp_plot_energy},
-    {"density.png", gp_plot_density},         {"liquid.png", gp_plot_liquid},
-    {"dissipation.png", gp_plot_dissipation}, {"probes.png", gp_plot_probes},
+    {"volume.png", gp_plot_volume},
+    {"energy.png", gp_plot_energy},
+    {"density.png", gp_plot_density},
+    {"liquid.png", gp_plot_liquid},
+    {"dissipation.png", gp_plot_dissipation},
+    {"probes.png", gp_plot_probes},
+    {"loads.png", gp_plot_loads},
 };
 #define N_PLOTS (int)(sizeof plots / sizeof plots[0])
 
