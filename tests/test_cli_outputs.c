@@ -48,6 +48,10 @@ static const warn_case warn_cases[] = {
     {"warn_large_amplitude",
      {"motion.type=sway", "motion.amplitude=0.5", "motion.period=100", NULL},
      {"motion.amplitude", "+-0.5 m", "unit error"}},
+    /* 4 "degrees" of roll written as 4 rad, slow enough to warn of nothing else */
+    {"warn_large_angle",
+     {"motion.type=roll", "motion.angle=4", "motion.period=100", NULL},
+     {"motion.angle", "229.2 degrees", "unit error"}},
 };
 #define N_WARN (sizeof warn_cases / sizeof warn_cases[0])
 

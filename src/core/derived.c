@@ -317,6 +317,15 @@ int derived_warnings(const config *cfg, const derived *dv, void (*emit)(const ch
             emit(msg, ctx);
             n++;
         }
+    /* A roll of more than 45 degrees is no tank's motion; 1 to 45 "degrees" written as
+       radians is (angles are in rad, like motion.phase) */
+    if (cfg->motion >= MOTION_ROLL && cfg->angle > 0.25 * M_PI) {
+        snprintf(msg, sizeof msg,
+                 "motion.angle = %.4g rad is %.4g degrees: a unit error? (angles are in rad)",
+                 cfg->angle, cfg->angle * 180.0 / M_PI);
+        emit(msg, ctx);
+        n++;
+    }
     return n;
 }
 
