@@ -1,4 +1,5 @@
-/* motion: sway, heave, decay, phase, duration, and tabulated motion (theory §6). */
+/* motion: sway, heave, roll, pitch, yaw, their decay, phase and duration, and tabulated motion
+ * (theory §6). */
 #include "boundary/motion.h"
 
 #include <ctype.h>
