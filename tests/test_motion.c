@@ -387,6 +387,38 @@ static void test_orientation_rates(void **state)
     motion_free(&mo);
 }
 
+/* A table that samples the harmonic roll, 200 rows a period over 3 periods: its frames follow
+ * the harmonic roll's within the natural spline's error (test_table_reproduces_acceleration
+ * derives the bounds): theta'' within 1.1 theta_k^2 / 12 Theta w^2 and theta within
+ * (5/384) theta_k^4 Theta, with theta_k = w h_k; so Omega' and the gravity's components
+ * (g sin theta, g cos theta) within those times their factors. Bits cannot agree: a spline
+ * through samples of a sine is not the sine. With phase 0 the sine's second derivative is 0
+ * at both ends, as the natural spline's is, so the whole table is compared. */
+static void test_table_roll_follows_the_harmonic_roll(void **state)
+{
+    (void)state;
+    const double th = 0.05, T = 1.2, w = 2.0 * PI / T, hk = T / KNOTS_PER_PERIOD, theta = w * hk;
+    char text[65536], err[512];
+    size_t used = (size_t)snprintf(text, sizeof text, "t,roll\n");
+    for (int k = 0; k <= KNOTS_PER_PERIOD * PERIODS; k++)
+        used += (size_t)snprintf(text + used, sizeof text - used, "%.17g,%.17g\n", hk * k,
+                                 th * sin(w * hk * k));
+    motion table, roll;
+    assert_int_equal(motion_from_table(&table, text, 2, err, sizeof err), 0);
+    motion_from(&roll, "[motion]\ntype = roll\nangle = 0.05\nperiod = 1.2\n");
+    const double tol_acc = 1.1 * theta * theta / 12.0 * th * w * w;
+    const double tol_angle = 5.0 / 384.0 * pow(theta, 4) * th + 1e-15;
+    for (int k = 1; k < 4 * KNOTS_PER_PERIOD * PERIODS; k++) {
+        double t = hk * k / 4.0;
+        tank_frame a = motion_frame(&table, G, t), b = motion_frame(&roll, G, t);
+        assert_close(a.omega_dot[2], b.omega_dot[2], tol_acc);
+        assert_close(a.gravity[0], b.gravity[0], G * tol_angle + 1e-15);
+        assert_close(a.gravity[1], b.gravity[1], G * tol_angle * th + 1e-15);
+    }
+    motion_free(&table);
+    motion_free(&roll);
+}
+
 /* A header that names t,x,y reads as the positional t,x,y of before: the same accelerations
  * bit for bit; a roll column turns the tank; pitch in 2D is refused. */
 static void test_named_columns(void **state)
@@ -466,6 +498,8 @@ int main(void)
         cmocka_unit_test(test_sway_roll_frame),
         cmocka_unit_test_setup_teardown(test_orientation_rates, table_setup, table_teardown),
         cmocka_unit_test_setup_teardown(test_named_columns, table_setup, table_teardown),
+        cmocka_unit_test_setup_teardown(test_table_roll_follows_the_harmonic_roll, table_setup,
+                                        table_teardown),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
