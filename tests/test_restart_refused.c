@@ -222,7 +222,11 @@ static long long recorded_series_bytes(const char *name)
     hid_t f = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT);
     hid_t d = H5Dopen2(f, "csv_sizes", H5P_DEFAULT);
     assert_true(f >= 0 && d >= 0);
-    long long sizes[4] = {0};
+    hid_t space = H5Dget_space(d);
+    hssize_t n = H5Sget_simple_extent_npoints(space);
+    H5Sclose(space);
+    long long sizes[8] = {0}; /* one per CSV file of a run (RUN_N_CSV) */
+    assert_true(n >= 1 && n <= 8);
     assert_true(H5Dread(d, H5T_NATIVE_LLONG, H5S_ALL, H5S_ALL, H5P_DEFAULT, sizes) >= 0);
     H5Dclose(d);
     H5Fclose(f);
