@@ -283,6 +283,27 @@ static void test_liquid_shape(void **state)
     assert_round_trip(&c);
 }
 
+/* motion.center: the tank's bottom centre by default (z at mid-width in 3D), as given
+ * otherwise; a 3D point given without z takes the mid-width; the resolved case writes it back. */
+static void test_motion_center(void **state)
+{
+    (void)state;
+    config c;
+    char err[ERR_LEN];
+    assert_int_equal(
+        load_text(&c, MINIMAL "[motion]\ntype = roll\nangle = 0.1\nperiod = 1\n", NULL, 0, err), 0);
+    assert_true(c.motion == MOTION_ROLL && c.motion_center[0] == 0.5 && c.motion_center[1] == 0.0 &&
+                c.motion_center[2] == 0.0);
+    assert_round_trip(&c);
+    const char *three_d[] = {"case.dim=3", "tank.width=0.3", "motion.center=0.2 0.1"};
+    int rc = load_text(&c, MINIMAL, three_d, 3, err);
+    if (rc) print_error("%s\n", err);
+    assert_int_equal(rc, 0);
+    assert_true(c.motion_center[0] == 0.2 && c.motion_center[1] == 0.1 &&
+                c.motion_center[2] == 0.15);
+    assert_round_trip(&c);
+}
+
 /* model.edbc and model.volume_correction default to auto, resolved by the scheme: with-eta0
  * and geometric for delta-plus-ALE, false and none for the other four (the paper's Fig. 7
  * baseline); an explicit value is kept whatever the scheme; the resolved case says the
@@ -467,6 +488,7 @@ int main(void)
         cmocka_unit_test(test_round_trip_minimal_and_full),
         cmocka_unit_test(test_round_trip_awkward_values),
         cmocka_unit_test(test_liquid_shape),
+        cmocka_unit_test(test_motion_center),
         cmocka_unit_test(test_scheme_dependent_defaults),
         cmocka_unit_test(test_write_has_every_key),
         cmocka_unit_test(test_inih_options_restored),
