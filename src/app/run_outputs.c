@@ -114,13 +114,8 @@ void run_write_loads_row(run *r)
     }
     double rot[3][3], force[3], moment[3];
     motion_rotation(&s->mo, s->t, rot);
-    for (int i = 0; i < 3; i++) {
-        force[i] = moment[i] = 0.0;
-        for (int j = 0; j < 3; j++) {
-            force[i] += rot[i][j] * l.force[j];
-            moment[i] += rot[i][j] * l.moment[j];
-        }
-    }
+    mat3_apply(rot, l.force, force);
+    mat3_apply(rot, l.moment, moment);
     csv_file *c = &r->loads;
     csv_put(c, s->t);
     for (int frame = 0; frame < 2; frame++) {

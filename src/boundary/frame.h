@@ -32,6 +32,18 @@ static inline void frame_cross(const double a[3], const double b[3], double out[
     out[2] = a[0] * b[1] - a[1] * b[0];
 }
 
+/* R v: a vector of the tank's axes in the inertial ones, R the tank's orientation */
+static inline void mat3_apply(double r[3][3], const double v[3], double out[3])
+{
+    for (int i = 0; i < 3; i++) out[i] = r[i][0] * v[0] + r[i][1] * v[1] + r[i][2] * v[2];
+}
+
+/* R^T v: a vector of the inertial axes in the tank's */
+static inline void mat3_apply_transposed(double r[3][3], const double v[3], double out[3])
+{
+    for (int j = 0; j < 3; j++) out[j] = r[0][j] * v[0] + r[1][j] * v[1] + r[2][j] * v[2];
+}
+
 static inline double vec3_norm(const double a[3])
 {
     return sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);

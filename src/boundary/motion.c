@@ -152,12 +152,6 @@ static void mat_mul(double a[3][3], double b[3][3], double out[3][3])
             out[i][j] = a[i][0] * b[0][j] + a[i][1] * b[1][j] + a[i][2] * b[2][j];
 }
 
-/* R^T v: a vector of the inertial axes in the tank's */
-static void to_tank_axes(double r[3][3], const double v[3], double out[3])
-{
-    for (int j = 0; j < 3; j++) out[j] = r[0][j] * v[0] + r[1][j] * v[1] + r[2][j] * v[2];
-}
-
 /* The chain of elementary rotations about the axes a_k = R_1 ... R_{k-1} e_k, with angles q_k,
  * has the angular velocity w = sum q_k' a_k and, since a_k' = w_{<k} x a_k with w_{<k} the
  * velocity of the rotations before k, the angular acceleration
@@ -185,11 +179,18 @@ static void orientation(const double q[3], const double q_dot[3], const double q
     memcpy(r, chain, sizeof chain);
 }
 
-void motion_rotation(const motion *mo, double t, double r[3][3])
+/* The orientation and its rates at time t, from the motion's angles. */
+static void orientation_at(const motion *mo, double t, double r[3][3], double w[3], double w_dot[3])
 {
-    double q[3], q_dot[3], q_ddot[3], w[3], w_dot[3];
+    double q[3], q_dot[3], q_ddot[3];
     motion_angles(mo, t, q, q_dot, q_ddot);
     orientation(q, q_dot, q_ddot, r, w, w_dot);
+}
+
+void motion_rotation(const motion *mo, double t, double r[3][3])
+{
+    double w[3], w_dot[3];
+    orientation_at(mo, t, r, w, w_dot);
 }
 
 tank_frame motion_frame(const motion *mo, double gravity, double t)
@@ -198,15 +199,13 @@ tank_frame motion_frame(const motion *mo, double gravity, double t)
     motion_acceleration(mo, t, f.origin_acc);
     memcpy(f.center, mo->center, sizeof f.center);
     if (!mo->rotates) return f;
-    double q[3], q_dot[3], q_ddot[3], r[3][3], w[3], w_dot[3], a[3];
-    motion_angles(mo, t, q, q_dot, q_ddot);
-    orientation(q, q_dot, q_ddot, r, w, w_dot);
-    double g[3] = {0.0, -gravity, 0.0};
+    double r[3][3], w[3], w_dot[3], a[3], g[3] = {0.0, -gravity, 0.0};
+    orientation_at(mo, t, r, w, w_dot);
     memcpy(a, f.origin_acc, sizeof a);
-    to_tank_axes(r, g, f.gravity);
-    to_tank_axes(r, a, f.origin_acc);
-    to_tank_axes(r, w, f.omega);
-    to_tank_axes(r, w_dot, f.omega_dot);
+    mat3_apply_transposed(r, g, f.gravity);
+    mat3_apply_transposed(r, a, f.origin_acc);
+    mat3_apply_transposed(r, w, f.omega);
+    mat3_apply_transposed(r, w_dot, f.omega_dot);
     for (int d = 0; d < 3; d++) f.rotating |= f.omega[d] != 0.0 || f.omega_dot[d] != 0.0;
     return f;
 }
@@ -227,8 +226,8 @@ double motion_max_effective_gravity(const motion *mo, double gravity, double t_e
             tank_frame f = motion_frame(mo, gravity, t);
             double uniform[3];
             for (int d = 0; d < 3; d++) uniform[d] = f.gravity[d] - f.origin_acc[d];
-            double w2 = vec3_norm(f.omega) * vec3_norm(f.omega);
-            g = vec3_norm(uniform) + (vec3_norm(f.omega_dot) + w2) * mo->reach;
+            double w = vec3_norm(f.omega);
+            g = vec3_norm(uniform) + (vec3_norm(f.omega_dot) + w * w) * mo->reach;
         } else {
             double a[3];
             motion_acceleration(mo, t, a);
@@ -269,10 +268,9 @@ static void keep_speed(const double *x, const double *v, void *ctx)
 {
     (void)x;
     speed_sample *s = ctx;
-    double speed = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-    if (v[MOTION_ROLL_ANGLE] != 0.0 || v[MOTION_PITCH_ANGLE] != 0.0 || v[MOTION_YAW_ANGLE] != 0.0)
-        speed += s->reach * (fabs(v[MOTION_ROLL_ANGLE]) + fabs(v[MOTION_PITCH_ANGLE]) +
-                             fabs(v[MOTION_YAW_ANGLE]));
+    double speed = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) +
+                   s->reach * (fabs(v[MOTION_ROLL_ANGLE]) + fabs(v[MOTION_PITCH_ANGLE]) +
+                               fabs(v[MOTION_YAW_ANGLE]));
     if (speed > s->most) s->most = speed;
 }
 
@@ -360,7 +358,7 @@ static bool named_columns(const char *header, table_columns *cols)
         }
         int c = 0;
         while (c < MOTION_CHANNELS && strcmp(field, channel_names[c]) != 0) c++;
-        if (c == MOTION_CHANNELS || (seen & (1 << c)) || cols->n == MOTION_CHANNELS) return false;
+        if (c == MOTION_CHANNELS || (seen & (1 << c))) return false; /* so at most 6 */
         seen |= 1 << c;
         cols->channel[cols->n++] = c;
     }
@@ -502,22 +500,11 @@ static double reach_of(const config *cfg, const double center[3])
 
 int motion_init(motion *mo, const config *cfg, char *err, size_t err_len)
 {
-    static const int translation_of[] = {[MOTION_SWAY] = MOTION_X,
-                                         [MOTION_HEAVE] = MOTION_Y,
-                                         [MOTION_SWAY_ROLL] = MOTION_X,
-                                         [MOTION_HEAVE_ROLL] = MOTION_Y};
-    static const int rotation_of[] = {[MOTION_ROLL] = MOTION_ROLL_ANGLE,
-                                      [MOTION_PITCH] = MOTION_PITCH_ANGLE,
-                                      [MOTION_YAW] = MOTION_YAW_ANGLE,
-                                      [MOTION_SWAY_ROLL] = MOTION_ROLL_ANGLE,
-                                      [MOTION_HEAVE_ROLL] = MOTION_ROLL_ANGLE};
     memset(mo, 0, sizeof *mo);
     mo->kind = cfg->motion;
-    mo->translation = mo->rotation = -1;
-    if (mo->kind == MOTION_SWAY || mo->kind == MOTION_HEAVE || mo->kind == MOTION_SWAY_ROLL ||
-        mo->kind == MOTION_HEAVE_ROLL)
-        mo->translation = translation_of[mo->kind];
-    if (mo->kind >= MOTION_ROLL) mo->rotation = rotation_of[mo->kind];
+    int axis = config_motion_translation_axis(mo->kind), angle = config_motion_rotation(mo->kind);
+    mo->translation = axis >= 0 ? MOTION_X + axis : -1;
+    mo->rotation = angle >= 0 ? MOTION_ROLL_ANGLE + angle : -1;
     mo->rotates = mo->rotation >= 0;
     mo->amplitude = cfg->amplitude;
     mo->angle = cfg->angle;

@@ -200,14 +200,20 @@ static bool append_number(char *buf, size_t size, size_t *used, const char *pref
     return true;
 }
 
+/* n numbers separated by `sep` into buf. */
+static void format_numbers(const double *v, int n, const char *sep, char *buf, size_t size)
+{
+    size_t used = 0;
+    buf[0] = '\0';
+    for (int i = 0; i < n && used < size; i++)
+        if (!append_number(buf, size, &used, i ? sep : "", v[i])) return;
+}
+
 static void format_gauges(const void *target, const ini_key *k, char *buf, size_t size)
 {
     (void)k;
     const config *cfg = target;
-    size_t used = 0;
-    buf[0] = '\0';
-    for (int i = 0; i < cfg->n_gauges && used < size; i++)
-        if (!append_number(buf, size, &used, i ? ", " : "", cfg->gauges[i])) break;
+    format_numbers(cfg->gauges, cfg->n_gauges, ", ", buf, size);
 }
 
 /* No space before ';': in INI " ;" starts a comment. */
@@ -254,10 +260,7 @@ static void format_center(const void *target, const ini_key *k, char *buf, size_
 {
     (void)k;
     const config *cfg = target;
-    size_t used = 0;
-    buf[0] = '\0';
-    for (int d = 0; d < cfg->dim && used < size; d++)
-        if (!append_number(buf, size, &used, d ? " " : "", cfg->motion_center[d])) return;
+    format_numbers(cfg->motion_center, cfg->dim, " ", buf, size);
 }
 
 /* The case file, section by section (docs/case-file.md; config_write follows this table). */
@@ -666,6 +669,29 @@ void config_write_keys(FILE *out) { ini_write_keys(&case_schema, out); }
 
 const char *config_scheme_name(scheme_kind s) { return ini_word_at(scheme_words, (int)s); }
 const char *config_motion_name(motion_kind m) { return ini_word_at(motion_words, (int)m); }
+
+int config_motion_translation_axis(motion_kind m)
+{
+    switch (m) {
+    case MOTION_SWAY:
+    case MOTION_SWAY_ROLL: return 0;
+    case MOTION_HEAVE:
+    case MOTION_HEAVE_ROLL: return 1;
+    default: return -1;
+    }
+}
+
+int config_motion_rotation(motion_kind m)
+{
+    switch (m) {
+    case MOTION_ROLL:
+    case MOTION_SWAY_ROLL:
+    case MOTION_HEAVE_ROLL: return 0;
+    case MOTION_PITCH: return 1;
+    case MOTION_YAW: return 2;
+    default: return -1;
+    }
+}
 const char *config_edbc_name(edbc_mode e) { return ini_word_at(edbc_words, (int)e); }
 const char *config_volume_correction_name(volume_correction_kind v)
 {

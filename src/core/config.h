@@ -126,6 +126,10 @@ void config_write_keys(FILE *out);
 /* The spellings of the case file (docs/case-file.md), e.g. "delta-plus-ale", "with-eta0". */
 const char *config_scheme_name(scheme_kind s);
 const char *config_motion_name(motion_kind m);
+/* The harmonic motions' parts: the axis a sway (0) or heave (1) translates along, and the angle
+ * a rotation turns, 0 roll, 1 pitch, 2 yaw; -1 when the motion has none (and for a table). */
+int config_motion_translation_axis(motion_kind m);
+int config_motion_rotation(motion_kind m);
 const char *config_edbc_name(edbc_mode e);
 const char *config_volume_correction_name(volume_correction_kind v);
 const char *config_eta_control_name(eta_control_kind e);

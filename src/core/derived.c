@@ -144,9 +144,8 @@ void derived_compute(const config *cfg, const derived_inputs *in, derived *dv)
         dv->mass_liquid = cfg->density * dv->v0;
     int periodic = cfg->motion != MOTION_NONE && cfg->motion != MOTION_TABLE && cfg->period > 0;
     dv->omega = periodic ? 2.0 * M_PI / cfg->period : 0.0;
-    bool rotation = cfg->motion >= MOTION_ROLL;
-    bool translation =
-        !rotation || cfg->motion == MOTION_SWAY_ROLL || cfg->motion == MOTION_HEAVE_ROLL;
+    bool translation = config_motion_translation_axis(cfg->motion) >= 0;
+    bool rotation = config_motion_rotation(cfg->motion) >= 0;
     /* the tank's speed scale: A w of a translation; for a rotation g Theta / w, the speed
        amplitude of the sway whose acceleration g Theta equals the tilted gravity's pull along
        the tank, a rotation's main forcing (docs/case-file.md) */
@@ -319,7 +318,7 @@ int derived_warnings(const config *cfg, const derived *dv, void (*emit)(const ch
         }
     /* A roll of more than 45 degrees is no tank's motion; 1 to 45 "degrees" written as
        radians is (angles are in rad, like motion.phase) */
-    if (cfg->motion >= MOTION_ROLL && cfg->angle > 0.25 * M_PI) {
+    if (config_motion_rotation(cfg->motion) >= 0 && cfg->angle > 0.25 * M_PI) {
         snprintf(msg, sizeof msg,
                  "motion.angle = %.4g rad is %.4g degrees: a unit error? (angles are in rad)",
                  cfg->angle, cfg->angle * 180.0 / M_PI);
