@@ -2,7 +2,8 @@
  * quotes, the reader reads back as it was written.
  * The CSV writer keeps the first failure of a row to reach its file, with the system's
  * reason, so that a run on a full disk stops with "No space left on device" instead of going
- * on with a record full of holes. /dev/full fails every write with ENOSPC (Linux). */
+ * on with a record full of holes. /dev/full fails every write with ENOSPC (Linux). A restart
+ * reopens a file written before columns were added with the new header. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -99,12 +100,60 @@ static void test_reader_reads_what_the_writer_wrote(void **state)
     remove(path);
 }
 
+/* The whole file as text (at most 255 bytes). */
+static void read_all(const char *path, char *text)
+{
+    FILE *f = fopen(path, "r");
+    assert_non_null(f);
+    size_t n = fread(text, 1, 255, f);
+    text[n] = '\0';
+    fclose(f);
+}
+
+/* A restart of a run whose file was written before columns were added: the rows up to the
+ * checkpoint's size gain the new columns empty, the rows after it are dropped, and the appends
+ * follow; the same header reopens as it is; another header is refused. */
+static void test_reopen_adds_columns(void **state)
+{
+    (void)state;
+    char path[] = "/tmp/vcsph-csv-XXXXXX", text[256];
+    csv_file c = open_temporary(path, "t,x");
+    for (int row = 0; row < 3; row++) {
+        csv_put(&c, row);
+        csv_put(&c, 10 * row);
+        csv_end_row(&c);
+    }
+    csv_close(&c);
+    long long checkpoint_size = (long long)strlen("t,x\n0,0\n1,10\n"); /* the third row after it */
+    assert_int_equal(csv_reopen_with_header(&c, path, checkpoint_size, "t,x,y,z"), 0);
+    assert_int_equal(csv_size(&c), (long long)strlen("t,x,y,z\n0,0,,\n1,10,,\n"));
+    csv_put(&c, 2);
+    csv_put(&c, 20);
+    csv_put(&c, 1);
+    csv_put(&c, 2);
+    csv_end_row(&c);
+    csv_close(&c);
+    read_all(path, text);
+    assert_string_equal(text, "t,x,y,z\n0,0,,\n1,10,,\n2,20,1,2\n");
+
+    long long size = (long long)strlen(text);
+    assert_int_equal(csv_reopen_with_header(&c, path, size, "t,x,y,z"), 0);
+    assert_int_equal(csv_size(&c), size);
+    csv_close(&c);
+    assert_int_equal(csv_reopen_with_header(&c, path, size, "t,x,w,z"), -2);
+    assert_int_equal(csv_reopen_with_header(&c, path, size, "t,x,y"), -2);
+    read_all(path, text);
+    assert_string_equal(text, "t,x,y,z\n0,0,,\n1,10,,\n2,20,1,2\n"); /* left as it was */
+    remove(path);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_full_disk_is_reported),
         cmocka_unit_test(test_rows_written_without_error),
         cmocka_unit_test(test_reader_reads_what_the_writer_wrote),
+        cmocka_unit_test(test_reopen_adds_columns),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

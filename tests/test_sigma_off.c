@@ -9,7 +9,10 @@
  * written a third time, the same way, when that normal became the nearest free-surface
  * neighbour's again with equidistant ones averaged (src/diag/freesurface.c alone), and a
  * fourth time when the steps began to land on the output times (step_stop and output_due
- * of src/app/simulation.c alone). Each
+ * of src/app/simulation.c alone), and a fifth time when shifting and the volume correction
+ * began to leave alone the concentration gradient of the liquid's own compression
+ * (src/physics/shifting.h, src/scheme/fields.*, src/scheme/volume_correction.c; the energy
+ * budget's work_moves of the same change does not touch the state). Each
  * line is one particle, in C's exact %a notation. */
 #include <setjmp.h>
 #include <stdarg.h>

@@ -7,15 +7,16 @@
  * sum): id, x, u, rho, m (p, V and u_wall follow from them by solver_update_eos; the per-step
  * fields lambda, surface, shifting, diffusion, ... are recomputed by solver_prepare); the
  * scalars that the next time step and neighbour skin read (max_acc) or that accumulate
- * (work_in, work_st); the whole eta controller, its adaptive history included (EdBC's state
- * is its mode, in the case, and the controller's eta0_regime; n_edbc is recomputed by
+ * (work_in, work_st, work_moves); the whole eta controller, its adaptive history included (EdBC's
+ * state is its mode, in the case, and the controller's eta0_regime; n_edbc is recomputed by
  * solver_prepare and saved for the record); and the bookkeeping of the outputs.
  *
  * Layout (checkpoint.h, version 2): one dataset each, scalars grouped with their "columns":
  *   case              bytes  the resolved case text (what `vcsph run --restart` runs)
  *   sound_speed       f64    c0 as the run computed it (a restart keeps it; main.c)
  *   motion_table      bytes  motion.type = table only: the table's text (motion_table.h)
- *   solver_f64        f64    t, last_dt, max_acc, work_in, work_st
+ *   solver_f64        f64    t, last_dt, max_acc, work_in, work_st, work_moves (without
+ *                            work_moves in checkpoints from before it: it resumes at 0)
  *   solver_i64        i64    dim, n_fluid, step, n_edbc
  *   eta_f64           f64    threshold, period, eta, t_last, eps_last, integral, eps_mean,
  *                            eps_expected
@@ -48,10 +49,12 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#define SOLVER_F64 "t,last_dt,max_acc,work_in,work_st"
-#define SOLVER_I64 "dim,n_fluid,step,n_edbc"
-#define ETA_F64    "threshold,period,eta,t_last,eps_last,integral,eps_mean,eps_expected"
-#define ETA_I64    "switching,kind,eta0_regime,switches,n_samples"
+#define SOLVER_F64 "t,last_dt,max_acc,work_in,work_st,work_moves"
+/* a checkpoint from before work_moves: its run resumes with work_moves = 0 */
+#define SOLVER_F64_BEFORE_MOVES "t,last_dt,max_acc,work_in,work_st"
+#define SOLVER_I64              "dim,n_fluid,step,n_edbc"
+#define ETA_F64                 "threshold,period,eta,t_last,eps_last,integral,eps_mean,eps_expected"
+#define ETA_I64                 "switching,kind,eta0_regime,switches,n_samples"
 #define RUN_F64                                                                                    \
     "mech_energy0,mass0,v0,ediss_period_start,surface_loss_period_start,next_series,"              \
     "next_snapshot,next_image"
@@ -88,25 +91,31 @@ typedef struct {
     const char *name, *columns;
     int n;
     double *field[F64_GROUP_MAX];
+    const char *columns_before; /* an older layout without the last field (NULL: none) */
 } f64_group;
 
 static void f64_groups(run *r, f64_group g[F64_GROUPS])
 {
     solver *s = &r->s;
     eta_controller *e = &s->eta_control;
-    g[0] = (f64_group){
-        "solver_f64", SOLVER_F64, 5, {&s->t, &s->last_dt, &s->max_acc, &s->work_in, &s->work_st}};
+    g[0] = (f64_group){"solver_f64",
+                       SOLVER_F64,
+                       6,
+                       {&s->t, &s->last_dt, &s->max_acc, &s->work_in, &s->work_st, &s->work_moves},
+                       SOLVER_F64_BEFORE_MOVES};
     g[1] = (f64_group){"eta_f64",
                        ETA_F64,
                        8,
                        {&e->threshold, &e->period, &e->eta, &e->t_last, &e->eps_last, &e->integral,
-                        &e->eps_mean, &e->eps_expected}};
+                        &e->eps_mean, &e->eps_expected},
+                       NULL};
     g[2] = (f64_group){"run_f64",
                        RUN_F64,
                        8,
                        {&r->energy0, &r->mass0, &r->v0, &r->ediss_period_start,
                         &r->surface_loss_period_start, &r->next_series, &r->next_snapshot,
-                        &r->next_image}};
+                        &r->next_image},
+                       NULL};
 }
 
 static void add_particles(item_list *l, const particles *p)
@@ -246,10 +255,16 @@ static int load_f64_scalars(run *r, const checkpoint_data *cd, char *err, size_t
     f64_group groups[F64_GROUPS];
     f64_groups(r, groups);
     for (int g = 0; g < F64_GROUPS; g++) {
-        double v[F64_GROUP_MAX];
+        double v[F64_GROUP_MAX] = {0};
         if (take(cd, groups[g].name, CHECKPOINT_F64, (size_t)groups[g].n, groups[g].columns, v, err,
-                 err_len))
-            return -1;
+                 err_len)) {
+            char older[256];
+            if (!groups[g].columns_before ||
+                take(cd, groups[g].name, CHECKPOINT_F64, (size_t)groups[g].n - 1,
+                     groups[g].columns_before, v, older, sizeof older))
+                return -1; /* with the message of the present layout */
+            v[groups[g].n - 1] = 0.0;
+        }
         for (int k = 0; k < groups[g].n; k++) *groups[g].field[k] = v[k];
     }
     return 0;
@@ -368,6 +383,7 @@ static int check_state(const run *r, char *err, size_t err_len)
                               s->max_acc,
                               s->work_in,
                               s->work_st,
+                              s->work_moves,
                               e->threshold,
                               e->period,
                               e->t_last,

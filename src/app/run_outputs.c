@@ -23,7 +23,8 @@
 static const char timeseries_header[] =
     "t,step,dt,n_fluid,eps_v1,eps_v2,eps_v3,eps_gm,eps_sph,mass_err,eta,edbc,n_edbc,"
     "n_free_surface,ekin,epot,eint,work_in,ediss,com_x,com_y,com_z,xmin,xmax,ymax,umax,"
-    "rho_min,rho_max,esurf,work_st,deps_u,deps_du,deps_corr,angmom_x,angmom_y,angmom_z";
+    "rho_min,rho_max,esurf,work_st,deps_u,deps_du,deps_corr,angmom_x,angmom_y,angmom_z,"
+    "work_moves";
 
 void run_out_path(const run *r, char *buf, size_t len, const char *name)
 {
@@ -69,14 +70,16 @@ static double surface_energy(solver *s)
     return s->pp.surface_tension ? surface_tension_energy(&s->st, &s->p, s->scratch) : 0.0;
 }
 
-/* ediss = work_in + work_st - (E(t) - E(0)): the mechanical energy theorem of the discrete
- * liquid, every force's work counted as integrated (theory §10; docs/energy.md). The surface
+/* ediss = work_in + work_st + work_moves - (E(t) - E(0)): the mechanical energy theorem of
+ * the discrete liquid, every force's work counted as integrated (theory §10; docs/energy.md),
+ * and the potential energy of the moves beyond the flow (shifting, the volume correction, mass
+ * fluxes) booked apart, since they relocate mass without a force. The surface
  * energy enters through the work of the surface-tension force, not through the measured
  * area: the area's measure drifts with the particles' disorder by a few 1e-3 of itself,
  * which on a flat surface is more than the liquid dissipates. */
 static double dissipated_energy(run *r, double energy)
 {
-    return r->s.work_in + r->s.work_st - (energy - r->energy0);
+    return r->s.work_in + r->s.work_st + r->s.work_moves - (energy - r->energy0);
 }
 
 /* What the surface lost beyond the work of its force, -(work_st + esurf): the surface energy
@@ -192,6 +195,7 @@ void run_write_series_row(run *r, int with_geometry)
         for (int k = 0; k < 3; k++) csv_put_empty(c);
     }
     for (int d = 0; d < 3; d++) csv_put(c, dg.angmom[d]);
+    csv_put(c, s->work_moves);
     csv_end_row(c);
 
     /* Eq. (6): the sound speed assumes speeds below c0/10 */
@@ -361,14 +365,19 @@ int run_write_image(run *r)
 }
 
 /* Creates CSV file k with its header, or for a restarted run reopens it at its size at the
- * checkpoint (the rows written after it are dropped). */
+ * checkpoint (the rows written after it are dropped; a file from before a column was added
+ * gains it, empty in the old rows). */
 static int open_csv(run *r, int k, const char *header)
 {
     char path[CONFIG_PATH_MAX + 64];
     run_out_path(r, path, sizeof path, run_csv_name(k));
     /* a checkpoint from before loads.csv recorded no size for it: it starts anew */
-    if (r->resumed && r->resume_sizes[k] >= 0)
-        return csv_reopen(run_csv(r, k), path, r->resume_sizes[k]);
+    if (r->resumed && r->resume_sizes[k] >= 0) {
+        int rc = csv_reopen_with_header(run_csv(r, k), path, r->resume_sizes[k], header);
+        if (rc == -2)
+            log_error("vcsph: %s: its header is neither this version's nor an older one's", path);
+        return rc ? -1 : 0;
+    }
     return csv_open(run_csv(r, k), path, header);
 }
 

@@ -1,7 +1,10 @@
 /* csv: writers. */
 #include "io/csv.h"
+#include "io/atomic_file.h"
 
 #include <errno.h>
+#include <stdbool.h>
+#include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -26,6 +29,65 @@ int csv_reopen(csv_file *c, const char *path, long long size)
     c->f = fopen(path, "a");
     /* the position csv_size reports is the end, where the appends go */
     return c->f && fseeko(c->f, 0, SEEK_END) == 0 ? 0 : -1;
+}
+
+/* Copies the first `size` bytes of `in` (its header line already read) to `out` under
+ * `header`, each row ended by `added` empty fields. Returns the bytes written or -1. */
+static long long copy_with_columns(FILE *in, FILE *out, long long size, long long header_len,
+                                   const char *header, int added)
+{
+    long long read = header_len, written = fprintf(out, "%s\n", header);
+    char *line = NULL;
+    size_t cap = 0;
+    ssize_t len;
+    while (written > 0 && read < size && (len = getline(&line, &cap, in)) > 0) {
+        read += len;
+        if (read > size || line[len - 1] != '\n') break; /* a row cut at the checkpoint's size */
+        line[len - 1] = '\0';
+        int n = fprintf(out, "%s%.*s\n", line, added, ",,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,");
+        written = n < 0 ? -1 : written + n;
+    }
+    free(line);
+    return read == size && written > 0 ? written : -1;
+}
+
+int csv_reopen_with_header(csv_file *c, const char *path, long long size, const char *header)
+{
+    FILE *in = fopen(path, "r");
+    if (!in) return -1;
+    char *old = NULL;
+    size_t cap = 0;
+    ssize_t len = getline(&old, &cap, in);
+    size_t old_len = len > 0 && old[len - 1] == '\n' ? (size_t)len - 1 : 0;
+    if (old_len == strlen(header) && !strncmp(old, header, old_len)) {
+        free(old);
+        fclose(in);
+        return csv_reopen(c, path, size);
+    }
+    int added = 0;
+    bool prefix = old_len > 0 && old_len < strlen(header) && !strncmp(old, header, old_len) &&
+                  header[old_len] == ',';
+    for (const char *h = header + old_len; prefix && *h; h++) added += *h == ',';
+    free(old);
+    if (!prefix || added > 32) {
+        fclose(in);
+        errno = EINVAL;
+        return -2;
+    }
+    char *tmp = atomic_temp_path(path);
+    FILE *out = tmp ? fopen(tmp, "w") : NULL;
+    long long written = out ? copy_with_columns(in, out, size, (long long)len, header, added) : -1;
+    fclose(in);
+    int ok = out && fflush(out) == 0 && fsync(fileno(out)) == 0;
+    if (out) ok = fclose(out) == 0 && ok;
+    char err[256];
+    if (!ok || written < 0 || atomic_commit("csv", tmp, path, err, sizeof err)) {
+        if (tmp) remove(tmp);
+        free(tmp);
+        return -1;
+    }
+    free(tmp);
+    return csv_reopen(c, path, written);
 }
 
 long long csv_size(const csv_file *c) { return c->f ? (long long)ftello(c->f) : -1; }

@@ -16,6 +16,11 @@ int csv_open(csv_file *c, const char *path, const char *header);
 /* Opens an existing file to append after its first `size` bytes, dropping the rest (the rows
  * a restart rewinds). Returns 0, or -1 (the file is missing or shorter than size). */
 int csv_reopen(csv_file *c, const char *path, long long size);
+/* csv_reopen for a run that writes `header`. A file from an older vcsph whose header is this
+ * one less columns added since at its end is first rewritten (under a temporary name, then
+ * renamed) with this header and those columns empty in its rows ("not computed"). Returns 0,
+ * -1 (as csv_reopen) or -2 (a header that is neither; errno EINVAL). */
+int csv_reopen_with_header(csv_file *c, const char *path, long long size, const char *header);
 void csv_close(csv_file *c);
 /* Bytes written so far (every row is flushed), or -1 for a file that is not open. */
 long long csv_size(const csv_file *c);

@@ -15,6 +15,22 @@ static inline vec shifting_pair(double w_ij, double w_dr, vec r_ji, double f_ij,
     return vec_scale(r_ji, (1.0 + SHIFTING_R * q2 * q2) * f_ij * vol_j);
 }
 
+/* The part of a concentration gradient s (1/m) beyond the floor |grad rho| / rho:
+ * s (1 - floor / |s|), nothing below it. A liquid in a pressure gradient is compressed by
+ * |grad p| / (rho c0^2) = |grad rho| / rho per metre. The particle arrangement with which SPH
+ * balances that gradient carries a concentration gradient of the same order (in hydrostatics,
+ * rows off their lattice by a thousandth of dr near the bottom and the surface band). That is
+ * the scheme's equilibrium, not a disorder: moving it away fights the pressure force, and
+ * through the relative-speed bound of Eq. (7) the fight feeds a current that grows from
+ * round-off in a tank at rest (docs/volume-correction.md, "A liquid at rest"). vcsph's
+ * addition to Eq. (7). A disorder of 1 % of dr has a gradient 1e-2 / dr, one to two orders of
+ * magnitude above the floor g / c0^2 of a tank at rest. */
+static inline vec gradient_beyond_floor(vec s, double floor)
+{
+    double norm = vec_norm(s);
+    return norm > floor ? vec_scale(s, 1.0 - floor / norm) : vec_zero();
+}
+
 /* Eq. (7), second line: |du| = min(|du*|, max_j |u_ij| / 2, U_max / 2) along du*. */
 static inline vec shifting_limit(vec du, double max_relative_speed, double u_max)
 {

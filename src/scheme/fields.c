@@ -85,7 +85,8 @@ static void geometry_and_gradients(const physics_params *pp, const tank *t, part
     }
 }
 
-/* Eq. (7): du*_i = -xi h U_max sum_j [1 + R (W_ij/W(dr))^4] grad_i W_ij V_j, limited, then
+/* Eq. (7): du*_i = -xi h U_max sum_j [1 + R (W_ij/W(dr))^4] grad_i W_ij V_j, the sum taken
+ * beyond the floor of the liquid's own compression gradient (shifting.h), limited, then
  * made tangential in S_F and switched off where lambda < 0.4 (drops and jets: no reliable
  * normal; theory §4, inferred from Sun et al. 2017). */
 void fields_shifting(const physics_params *pp, particles *p, const neighbour_list *nl)
@@ -102,6 +103,7 @@ void fields_shifting(const physics_params *pp, particles *p, const neighbour_lis
             double rel2 = vec_norm2(vec_sub(vec_load(p->u, pr.j), ui));
             if (rel2 > max_relative2) max_relative2 = rel2;
         }
+        sum = gradient_beyond_floor(sum, fields_compression_gradient(p, i));
         vec du = vec_scale(sum, -k->h * pp->shift_u_max);
         du = shifting_limit(du, sqrt(max_relative2), pp->shift_u_max);
         if (p->lambda[i] < SHIFTING_LAMBDA_MIN)

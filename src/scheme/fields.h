@@ -16,6 +16,13 @@
 /* Lambda below which a particle gets no shifting (theory §4). */
 #define SHIFTING_LAMBDA_MIN 0.4
 
+/* |grad rho| / rho of fluid particle i (1/m), from the step's geometry: the floor below which
+ * shifting and the volume correction see no disorder (gradient_beyond_floor, shifting.h). */
+static inline double fields_compression_gradient(const particles *p, size_t i)
+{
+    return vec_norm(vec_load(p->grad_rho, i)) / p->rho[i];
+}
+
 /* The geometry of the step (needs the ghosts refreshed): L, lambda, the normal, sum W,
  * sum W V, the renormalized density and velocity gradients, nu_t, nu_delta (fluid), then the
  * free surface and S_F. */

@@ -88,6 +88,22 @@ static double input_power(solver *s, const tank_frame *frame)
     return reduce_sum(s->scratch, p->n_fluid);
 }
 
+/* The rate at which the particles' moves beyond the flow change the potential energy
+ * sum m g y: shifting and the volume correction move a particle by (dx/dt - u) dt, and with
+ * variable masses (eta > 0) mass moves between particles. None is a force: the liquid's
+ * mass is relocated, not lifted, so this energy is no work and no dissipation, and the budget
+ * books it apart (work_moves; docs/energy.md). */
+static double moves_power(solver *s)
+{
+    particles *p = &s->p;
+    const rates *k = &s->k;
+    double g = s->cfg->gravity;
+#pragma omp parallel for schedule(static)
+    for (size_t i = 0; i < p->n_fluid; i++)
+        s->scratch[i] = g * (p->m[i] * (k->dx[1][i] - p->u[1][i]) + k->dm[i] * p->x[1][i]);
+    return reduce_sum(s->scratch, p->n_fluid);
+}
+
 static double max_acceleration(solver *s)
 {
     particles *p = &s->p;
@@ -131,7 +147,8 @@ void solver_advance(solver *s, double t_stop)
     double *y[RK_VARS], *rate[RK_VARS];
     rk_arrays(s, y, rate);
     for (int v = 0; v < RK_VARS; v++) memcpy(s->y0[v], y[v], n * sizeof(double));
-    double work = 0.0, work_st = 0.0;
+    double work = 0.0, work_st = 0.0, work_moves = 0.0;
+    bool moves = s->pp.shifting || s->pp.volume_correction;
     for (int stage = 0; stage < 4; stage++) {
         double ts = s->t + stage_c[stage] * dt, c = stage_c[stage] * dt;
         tank_frame frame = solver_frame(s, ts);
@@ -148,6 +165,7 @@ void solver_advance(solver *s, double t_stop)
         if (stage == 0) s->max_acc = max_acceleration(s);
         work += stage_w[stage] * input_power(s, &frame);
         if (s->pp.surface_tension) work_st += stage_w[stage] * surface_tension_power(p, s->scratch);
+        if (moves) work_moves += stage_w[stage] * moves_power(s);
         double w = stage_w[stage];
 #pragma omp parallel for schedule(static)
         for (size_t i = 0; i < n; i++)
@@ -159,6 +177,7 @@ void solver_advance(solver *s, double t_stop)
         for (int v = 0; v < RK_VARS; v++) y[v][i] = s->y0[v][i] + dt * s->sum[v][i];
     s->work_in += dt * work;
     s->work_st += dt * work_st;
+    s->work_moves += dt * work_moves;
     s->max_displacement = max_displacement(s);
     /* land exactly on t_stop when the step was cut to reach it */
     s->t = s->t + dt >= t_stop ? t_stop : s->t + dt;

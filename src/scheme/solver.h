@@ -45,6 +45,7 @@ typedef struct {
     surface_tension_params st;    /* sigma and the calibration of the interface function */
     surface_tension_work st_work; /* its work arrays, fluid and ghosts */
     double work_st;               /* integral of the surface-tension power sum F^st . u */
+    double work_moves;            /* integral of the moves' potential power (integrate.c) */
     eta_controller eta_control;   /* eta of Eq. (3): 1 = variable masses (delta-ALE), varied in
                                      delta-plus-ALE by the switch (theory §8) */
     long n_edbc;                  /* particles corrected by EdBC at the last step start */

@@ -69,7 +69,9 @@ static void correction_velocity(const physics_params *pp, particles *p, const ne
                 sum = vec_add(sum, volume_correction_pair(ei, p->volume_mismatch[pr.j], pr.r_ji,
                                                           pr.f, p->vol[pr.j]));
             }
-            /* at most U_max / 2, Eq. (7)'s cap (no relative-speed bound here) */
+            /* beyond the compression gradient's floor, as the shifting (shifting.h), and at
+               most U_max / 2, Eq. (7)'s cap (no relative-speed bound here) */
+            sum = gradient_beyond_floor(sum, fields_compression_gradient(p, i));
             du = shifting_limit(vec_scale(sum, scale), INFINITY, pp->shift_u_max);
         }
         vec_store(p->correction, i, du);
