@@ -255,7 +255,7 @@ static int load_f64_scalars(run *r, const checkpoint_data *cd, char *err, size_t
     f64_group groups[F64_GROUPS];
     f64_groups(r, groups);
     for (int g = 0; g < F64_GROUPS; g++) {
-        double v[F64_GROUP_MAX] = {0};
+        double v[F64_GROUP_MAX];
         if (take(cd, groups[g].name, CHECKPOINT_F64, (size_t)groups[g].n, groups[g].columns, v, err,
                  err_len)) {
             char older[256];

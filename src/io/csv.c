@@ -31,6 +31,9 @@ int csv_reopen(csv_file *c, const char *path, long long size)
     return c->f && fseeko(c->f, 0, SEEK_END) == 0 ? 0 : -1;
 }
 
+/* The separators of the empty fields a row gains, as many as a reopen may add. */
+static const char EMPTY_FIELDS[] = ",,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,";
+
 /* Copies the first `size` bytes of `in` (its header line already read) to `out` under
  * `header`, each row ended by `added` empty fields. Returns the bytes written or -1. */
 static long long copy_with_columns(FILE *in, FILE *out, long long size, long long header_len,
@@ -44,7 +47,7 @@ static long long copy_with_columns(FILE *in, FILE *out, long long size, long lon
         read += len;
         if (read > size || line[len - 1] != '\n') break; /* a row cut at the checkpoint's size */
         line[len - 1] = '\0';
-        int n = fprintf(out, "%s%.*s\n", line, added, ",,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,");
+        int n = fprintf(out, "%s%.*s\n", line, added, EMPTY_FIELDS);
         written = n < 0 ? -1 : written + n;
     }
     free(line);
@@ -69,7 +72,7 @@ int csv_reopen_with_header(csv_file *c, const char *path, long long size, const 
                   header[old_len] == ',';
     for (const char *h = header + old_len; prefix && *h; h++) added += *h == ',';
     free(old);
-    if (!prefix || added > 32) {
+    if (!prefix || added > (int)sizeof EMPTY_FIELDS - 1) {
         fclose(in);
         errno = EINVAL;
         return -2;
