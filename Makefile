@@ -39,6 +39,8 @@ sanitize: deps
 bench: deps
 	@$(MAKE) --no-print-directory build
 	$(BUILD)/bench_step 30 delta delta-plus-ale:none delta-plus-ale delta-ale
+	$(BUILD)/bench_scaling_2d 1e6
+	$(BUILD)/bench_scaling_3d 1e6
 	$(BUILD)/checkpoint_io $(BUILD)
 
 clean:

@@ -8,6 +8,7 @@
  * steps. A benchmark: it never fails on timing. */
 #define DIM 2
 #include "app/progress.h"
+#include "bench_memory.h"
 #include "scheme/solver.h"
 
 #include <omp.h>
@@ -35,20 +36,6 @@ static double support_pairs(const solver *s)
         }
     }
     return pairs;
-}
-
-static double bytes_per_particle(const solver *s)
-{
-    const particles *p = &s->p;
-    /* the double arrays of particles.c, the id, ghost source and walls, surface flags */
-    double store = (double)particles_bytes_per_slot() * (double)p->capacity;
-    double work = (2.0 * RK_VARS + RK_VARS + 1.0) * sizeof(double) * (double)p->n_fluid +
-                  sizeof(size_t) * (double)p->n_fluid;
-    double lists = (double)s->nl.index_capacity * sizeof(int32_t) +
-                   (double)s->nl.capacity_rows * sizeof(int32_t);
-    double cells = (double)s->grid.item_capacity * 2.0 * sizeof(uint32_t) +
-                   (double)s->grid.cells_capacity * sizeof(size_t);
-    return (store + work + lists + cells) / (double)p->n_fluid;
 }
 
 /* Times `steps` steps of `scheme` on 1 and 2 threads; stores the PS/s in ps_out[0..1]. */
