@@ -33,6 +33,19 @@ static inline bool pair_of(const kernel *k, double *const x[DIM], vec xi, const 
     return true;
 }
 
+/* The pairs of particle i within 2h, in the list's order, into `out` (room for count[i]);
+ * returns how many. A short loop of its own, so that the square roots and kernels of many
+ * pairs are in flight at once before the physics reads them. */
+static inline int32_t pairs_gather(const kernel *k, double *const x[DIM], const neighbour_list *nl,
+                                   size_t i, vec xi, pair *out)
+{
+    const int32_t *row = neighbour_row(nl, i);
+    int32_t n_in = 0;
+    for (int32_t n = 0; n < nl->count[i]; n++)
+        if (pair_of(k, x, xi, row, n, &out[n_in])) n_in++;
+    return n_in;
+}
+
 /* The one neighbour loop of every pass: the pairs (i, j) of particle i at xi whose distance
  * is within 2h, one by one in `pr` (declared by the caller), in the list's order:
  *
@@ -40,11 +53,14 @@ static inline bool pair_of(const kernel *k, double *const x[DIM], vec xi, const 
  *     FOR_EACH_PAIR (k, p->x, nl, i, xi, pr) { ... pr.j, pr.r_ji, pr.f ... }
  *
  * Each pass supplies only its pair functions (src/physics). `continue` goes to the next pair,
- * `break` ends the loop. */
+ * `break` ends the loop. The geometry of the row is gathered first (pairs_gather, into a
+ * buffer on the stack), then the body runs over it: the same pairs in the same order, so the
+ * same sums, but the square roots of many pairs in flight at once instead of one pair's
+ * chain of dependent operations after the other's. */
 #define FOR_EACH_PAIR(k, x, nl, i, xi, pr)                                                         \
-    for (int32_t pr##_at = 0; pr##_at < (nl)->count[i]; pr##_at++)                                 \
-        if (!pair_of(k, x, xi, neighbour_row(nl, i), pr##_at, &(pr))) {                            \
-        } else
+    for (pair pr##_all[(nl)->count[i] + 1],                                                        \
+         *pr##_end = pr##_all + pairs_gather(k, x, nl, i, xi, pr##_all), *pr##_at = pr##_all;     \
+         pr##_at < pr##_end && ((pr) = *pr##_at, true); pr##_at++)
 
 /* A parallel loop over the fluid whose work lies in S_F: S_F is a few layers of a fluid sorted
  * by cell, so static chunks would give one thread most of it. Each particle must write only
