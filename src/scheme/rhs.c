@@ -1,42 +1,17 @@
 /* rhs: continuity, pressure and viscous forces, gravity, ALE terms and masses (Eqs. 3, 4). */
 #include "scheme/rhs.h"
-#include "physics/ale.h"
-#include "physics/continuity.h"
 #include "physics/volume_correction.h"
-#include "scheme/momentum.h"
+#include "scheme/rhs_sums.h"
 
-/* One particle's sums. `les`, `ale` and `variable_mass` are compile-time constants at each
- * call below, so the loop is specialised once per loop, never tested per pair
- * (docs/architecture.md). With ale (shifting on, Eq. 3): the particles move with u + du, the
- * continuity equation gains -rho_i du_ji . grad W V_j and the flux div(rho du), the momentum
- * equation rho (du . grad) u, and with variable masses dm/dt = eta [div(rho du) V_i + D^m]. */
-static inline void rhs_particle(const physics_params *pp, const particles *p,
-                                const neighbour_list *nl, size_t i, const tank_frame *frame,
-                                const bool les, const bool ale, const bool variable_mass,
-                                double eta, const rates *out)
+#include <omp.h>
+
+/* Particle i's rates from its neighbour sums. */
+static inline void rhs_particle_finish(const physics_params *pp, const particles *p, size_t i,
+                                       const tank_frame *frame, const bool variable_mass,
+                                       double eta, rhs_sums s, const rates *out)
 {
-    const kernel *k = &pp->k;
-    momentum_particle mi = momentum_particle_of(pp, p, i);
-    vec xi = vec_load(p->x, i), ui = mi.u, dui = mi.shift;
-    double rhoi = p->rho[i], vi = p->vol[i];
-    double drho = 0.0, mass_flux = 0.0;
-    vec force = vec_zero(); /* per unit volume */
-    pair pr;
-    FOR_EACH_PAIR (k, p->x, nl, i, xi, pr) {
-        size_t j = pr.j;
-        double vj = p->vol[j];
-        vec u_ji = vec_sub(vec_load(p->u, j), ui);
-        vec transport_ji = u_ji; /* (u + du)_ji: the particles move with u + du */
-        if (ale) {
-            vec duj = vec_load(p->shift, j);
-            transport_ji = vec_add(u_ji, vec_sub(duj, dui));
-            double flux = ale_flux_pair(rhoi, dui, p->rho[j], duj, pr.r_ji, pr.f);
-            drho += flux * vj;
-            if (variable_mass && !particle_is_wall_image(p, j)) mass_flux += flux * vi * vj;
-        }
-        drho += continuity_pair(rhoi, transport_ji, pr.r_ji, pr.f, vj);
-        force = momentum_pair_add(force, pp, p, &mi, &pr, les, ale);
-    }
+    vec xi = vec_load(p->x, i), ui = vec_load(p->u, i), dui = vec_load(p->shift, i);
+    double drho = s.drho;
     vec transport = vec_add(ui, dui);
     if (pp->volume_correction) { /* the particle moves through the density field */
         vec dvi = vec_load(p->correction, i);
@@ -44,7 +19,7 @@ static inline void rhs_particle(const physics_params *pp, const particles *p,
         drho += volume_correction_resampling(dvi, vec_load(p->grad_rho, i));
     }
     out->drho[i] = drho + p->diff_rho[i];
-    vec acc = vec_axpy(frame_body_force(frame, xi, ui), 1.0 / rhoi, force);
+    vec acc = vec_axpy(frame_body_force(frame, xi, ui), 1.0 / p->rho[i], s.force);
     /* the surface-tension force on the particle at this stage: m a sums it exactly */
     if (pp->surface_tension) acc = vec_axpy(acc, 1.0 / p->m[i], vec_load(p->st_force, i));
     for (int d = 0; d < DIM; d++) {
@@ -52,24 +27,95 @@ static inline void rhs_particle(const physics_params *pp, const particles *p,
         out->dx[d][i] = transport.c[d];
     }
     /* Eq. (3): dm/dt = eta [div(rho du) V_i + D^m] (fluid pairs only: the total is exact) */
-    out->dm[i] = variable_mass ? eta * (mass_flux + p->diff_m[i]) : 0.0;
+    out->dm[i] = variable_mass ? eta * (s.mass_flux + p->diff_m[i]) : 0.0;
 }
 
-#define RHS_LOOP(les, ale, mass)                                                                   \
-    _Pragma("omp parallel for schedule(static)") for (size_t i = 0; i < p->n_fluid; i++)           \
-        rhs_particle(pp, p, nl, i, frame, les, ale, mass, eta, out)
+/* The particles [first, end), first a multiple of LANES: four at a time in lanes where `lanes`
+ * and four remain, else one by one. `les`, `ale` and `variable_mass` are compile-time constants
+ * at each call below, so the code is specialised once per variant, never tested per pair
+ * (docs/architecture.md). With ale (shifting on, Eq. 3): the particles move with u + du, the
+ * continuity equation gains -rho_i du_ji . grad W V_j and the flux div(rho du), the momentum
+ * equation rho (du . grad) u, and with variable masses dm/dt = eta [div(rho du) V_i + D^m]. */
+__attribute__((always_inline)) static inline void
+rhs_range_variant(const physics_params *pp, const particles *p, const neighbour_list *nl,
+                  size_t first, size_t end, const tank_frame *frame, const bool lanes,
+                  const bool les, const bool ale, const bool variable_mass, double eta,
+                  const rates *out)
+{
+    for (size_t i0 = first; i0 < end; i0 += LANES) {
+        rhs_sums s[LANES];
+        size_t n = end - i0 < LANES ? end - i0 : LANES;
+        if (lanes && n == LANES)
+            rhs_lanes_sums(pp, p, nl, i0, les, ale, variable_mass, s);
+        else
+            for (size_t l = 0; l < n; l++)
+                s[l] = rhs_particle_sums(pp, p, nl, i0 + l, les, ale, variable_mass);
+        for (size_t l = 0; l < n; l++)
+            rhs_particle_finish(pp, p, i0 + l, frame, variable_mass, eta, s[l], out);
+    }
+}
+
+__attribute__((always_inline)) static inline void
+rhs_range(const physics_params *pp, const particles *p, const neighbour_list *nl, size_t first,
+          size_t end, const tank_frame *frame, double eta, const rates *out, const bool lanes)
+{
+#define RHS_VARIANT(les, ale, mass)                                                                \
+    rhs_range_variant(pp, p, nl, first, end, frame, lanes, les, ale, mass, eta, out)
+    /* variable masses come only with shifting (Table 1: eta = 1 implies xi = 1) */
+    int variant = (pp->les ? 4 : 0) + (pp->shifting ? 2 : 0) + (pp->shifting && eta > 0.0);
+    switch (variant) {
+    case 0: RHS_VARIANT(false, false, false); break;
+    case 2: RHS_VARIANT(false, true, false); break;
+    case 3: RHS_VARIANT(false, true, true); break;
+    case 4: RHS_VARIANT(true, false, false); break;
+    case 6: RHS_VARIANT(true, true, false); break;
+    default: RHS_VARIANT(true, true, true); break;
+    }
+#undef RHS_VARIANT
+}
+
+/* The lanes in 256-bit registers (AVX2), for processors that have them (x86-64-v3); the
+ * build's own baseline (x86-64-v2, SSE) would split every lane operation in two and run slower
+ * than the scalar code. No fused multiply-add: -ffp-contract=off holds here too. */
+__attribute__((target("arch=x86-64-v3"))) static void
+rhs_range_lanes(const physics_params *pp, const particles *p, const neighbour_list *nl,
+                size_t first, size_t end, const tank_frame *frame, double eta, const rates *out)
+{
+    rhs_range(pp, p, nl, first, end, frame, eta, out, true);
+}
+
+static void rhs_range_scalar(const physics_params *pp, const particles *p,
+                             const neighbour_list *nl, size_t first, size_t end,
+                             const tank_frame *frame, double eta, const rates *out)
+{
+    rhs_range(pp, p, nl, first, end, frame, eta, out, false);
+}
+
+bool rhs_lanes_available(void) { return __builtin_cpu_supports("x86-64-v3"); }
+
+void rhs_compute_with(const physics_params *pp, const particles *p, const neighbour_list *nl,
+                      const tank_frame *frame, double eta, const rates *out, bool lanes)
+{
+    size_t n_blocks = (p->n_fluid + LANES - 1) / LANES;
+#pragma omp parallel
+    {
+        /* static blocks of LANES particles: each particle's rates are its own, whichever
+         * thread computes them */
+        size_t t = (size_t)omp_get_thread_num(), n_threads = (size_t)omp_get_num_threads();
+        size_t first = n_blocks * t / n_threads * LANES;
+        size_t end = n_blocks * (t + 1) / n_threads * LANES;
+        if (end > p->n_fluid) end = p->n_fluid;
+        if (first < end) {
+            if (lanes)
+                rhs_range_lanes(pp, p, nl, first, end, frame, eta, out);
+            else
+                rhs_range_scalar(pp, p, nl, first, end, frame, eta, out);
+        }
+    }
+}
 
 void rhs_compute(const physics_params *pp, const particles *p, const neighbour_list *nl,
                  const tank_frame *frame, double eta, const rates *out)
 {
-    /* variable masses come only with shifting (Table 1: eta = 1 implies xi = 1) */
-    int variant = (pp->les ? 4 : 0) + (pp->shifting ? 2 : 0) + (pp->shifting && eta > 0.0);
-    switch (variant) {
-    case 0: RHS_LOOP(false, false, false); break;
-    case 2: RHS_LOOP(false, true, false); break;
-    case 3: RHS_LOOP(false, true, true); break;
-    case 4: RHS_LOOP(true, false, false); break;
-    case 6: RHS_LOOP(true, true, false); break;
-    default: RHS_LOOP(true, true, true); break;
-    }
+    rhs_compute_with(pp, p, nl, frame, eta, out, rhs_lanes_available());
 }

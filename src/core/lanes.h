@@ -1,0 +1,108 @@
+/* lanes: four particles' pair sums side by side in SIMD lanes (GCC vector extensions). Each
+ * lane is one particle i walking its own neighbour row in its own order, and every operation
+ * on a lane is the operation the scalar code does on that particle, in the same order, so each
+ * particle's sums are the scalar code's to the bit, whatever the instruction set (SSE does a
+ * 4-lane operation as two 2-lane ones, AVX2 as one: the same roundings). */
+#ifndef VCSPH_LANES_H
+#define VCSPH_LANES_H
+
+#include "core/dim.h"
+#include <math.h>
+#include <stdint.h>
+
+/* Lane values are passed between inline functions only, never across a call, so the ABI note
+ * GCC makes about 256-bit vectors in code built without AVX does not apply. */
+#pragma GCC diagnostic ignored "-Wpsabi"
+#define LANE_INLINE __attribute__((always_inline)) static inline
+
+#define LANES 4
+typedef double lane_real __attribute__((vector_size(LANES * sizeof(double))));
+typedef int64_t lane_mask __attribute__((vector_size(LANES * sizeof(double)))); /* -1 or 0 */
+
+typedef struct {
+    lane_real c[DIM];
+} lane_vec;
+
+LANE_INLINE lane_real lane_broadcast(double a) { return (lane_real){a, a, a, a}; }
+
+/* m ? a : b, lane by lane */
+LANE_INLINE lane_real lane_select(lane_mask m, lane_real a, lane_real b)
+{
+    return (lane_real)((m & (lane_mask)a) | (~m & (lane_mask)b));
+}
+
+/* a[j[0]], ..., a[j[3]] */
+LANE_INLINE lane_real lane_gather(const double *a, const int32_t j[LANES])
+{
+    return (lane_real){a[j[0]], a[j[1]], a[j[2]], a[j[3]]};
+}
+
+/* a[i], ..., a[i + 3] */
+LANE_INLINE lane_real lane_load(const double *a, size_t i)
+{
+    return (lane_real){a[i], a[i + 1], a[i + 2], a[i + 3]};
+}
+
+LANE_INLINE lane_vec lane_vec_gather(double *const x[DIM], const int32_t j[LANES])
+{
+    lane_vec v;
+    for (int d = 0; d < DIM; d++) v.c[d] = lane_gather(x[d], j);
+    return v;
+}
+
+LANE_INLINE lane_vec lane_vec_load(double *const x[DIM], size_t i)
+{
+    lane_vec v;
+    for (int d = 0; d < DIM; d++) v.c[d] = lane_load(x[d], i);
+    return v;
+}
+
+/* The correctly rounded square root of each lane (sqrtpd), as sqrt() of each. */
+LANE_INLINE lane_real lane_sqrt(lane_real a)
+{
+    lane_real r = a;
+    for (int l = 0; l < LANES; l++) r[l] = __builtin_sqrt(a[l]);
+    return r;
+}
+
+LANE_INLINE lane_vec lane_vec_sub(lane_vec a, lane_vec b)
+{
+    for (int d = 0; d < DIM; d++) a.c[d] -= b.c[d];
+    return a;
+}
+
+LANE_INLINE lane_vec lane_vec_add(lane_vec a, lane_vec b)
+{
+    for (int d = 0; d < DIM; d++) a.c[d] += b.c[d];
+    return a;
+}
+
+LANE_INLINE lane_vec lane_vec_scale(lane_vec a, lane_real s)
+{
+    for (int d = 0; d < DIM; d++) a.c[d] *= s;
+    return a;
+}
+
+/* a + s b */
+LANE_INLINE lane_vec lane_vec_axpy(lane_vec a, lane_real s, lane_vec b)
+{
+    for (int d = 0; d < DIM; d++) a.c[d] += s * b.c[d];
+    return a;
+}
+
+/* 0 + a_0 b_0 + a_1 b_1 (+ a_2 b_2): vec_dot's order */
+LANE_INLINE lane_real lane_vec_dot(lane_vec a, lane_vec b)
+{
+    lane_real s = lane_broadcast(0.0);
+    for (int d = 0; d < DIM; d++) s += a.c[d] * b.c[d];
+    return s;
+}
+
+/* m ? a + b : a, lane by lane: a sum that takes the pair only where it counts */
+LANE_INLINE lane_vec lane_vec_add_where(lane_mask m, lane_vec a, lane_vec b)
+{
+    for (int d = 0; d < DIM; d++) a.c[d] = lane_select(m, a.c[d] + b.c[d], a.c[d]);
+    return a;
+}
+
+#endif
