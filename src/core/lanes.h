@@ -7,7 +7,10 @@
 #define VCSPH_LANES_H
 
 #include "core/dim.h"
+#include "core/lanes_switch.h"
 #include <math.h>
+#include <stdbool.h>
+#include <stddef.h>
 #include <stdint.h>
 
 /* Lane values are passed between inline functions only, never across a call, so the ABI note
@@ -24,6 +27,8 @@ typedef struct {
 } lane_vec;
 
 LANE_INLINE lane_real lane_broadcast(double a) { return (lane_real){a, a, a, a}; }
+
+
 
 /* m ? a : b, lane by lane */
 LANE_INLINE lane_real lane_select(lane_mask m, lane_real a, lane_real b)
@@ -63,6 +68,13 @@ LANE_INLINE lane_real lane_sqrt(lane_real a)
     lane_real r = a;
     for (int l = 0; l < LANES; l++) r[l] = __builtin_sqrt(a[l]);
     return r;
+}
+
+LANE_INLINE lane_vec lane_vec_zero(void)
+{
+    lane_vec v;
+    for (int d = 0; d < DIM; d++) v.c[d] = lane_broadcast(0.0);
+    return v;
 }
 
 LANE_INLINE lane_vec lane_vec_sub(lane_vec a, lane_vec b)

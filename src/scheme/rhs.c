@@ -3,8 +3,6 @@
 #include "physics/volume_correction.h"
 #include "scheme/rhs_sums.h"
 
-#include <omp.h>
-
 /* Particle i's rates from its neighbour sums. */
 static inline void rhs_particle_finish(const physics_params *pp, const particles *p, size_t i,
                                        const tank_frame *frame, const bool variable_mass,
@@ -74,48 +72,26 @@ rhs_range(const physics_params *pp, const particles *p, const neighbour_list *nl
 #undef RHS_VARIANT
 }
 
-/* The lanes in 256-bit registers (AVX2), for processors that have them (x86-64-v3); the
- * build's own baseline (x86-64-v2, SSE) would split every lane operation in two and run slower
- * than the scalar code. No fused multiply-add: -ffp-contract=off holds here too. */
-__attribute__((target("arch=x86-64-v3"))) static void
-rhs_range_lanes(const physics_params *pp, const particles *p, const neighbour_list *nl,
-                size_t first, size_t end, const tank_frame *frame, double eta, const rates *out)
+/* The lanes' form (core/lanes.h: compiled for AVX2, run where the processor has it). */
+LANES_TARGET static void rhs_range_lanes(const physics_params *pp, const particles *p,
+                                         const neighbour_list *nl, size_t first, size_t end,
+                                         const tank_frame *frame, double eta, const rates *out)
 {
     rhs_range(pp, p, nl, first, end, frame, eta, out, true);
 }
 
-static void rhs_range_scalar(const physics_params *pp, const particles *p,
-                             const neighbour_list *nl, size_t first, size_t end,
-                             const tank_frame *frame, double eta, const rates *out)
+static void rhs_range_scalar(const physics_params *pp, const particles *p, const neighbour_list *nl,
+                             size_t first, size_t end, const tank_frame *frame, double eta,
+                             const rates *out)
 {
     rhs_range(pp, p, nl, first, end, frame, eta, out, false);
-}
-
-bool rhs_lanes_available(void) { return __builtin_cpu_supports("x86-64-v3"); }
-
-void rhs_compute_with(const physics_params *pp, const particles *p, const neighbour_list *nl,
-                      const tank_frame *frame, double eta, const rates *out, bool lanes)
-{
-    size_t n_blocks = (p->n_fluid + LANES - 1) / LANES;
-#pragma omp parallel
-    {
-        /* static blocks of LANES particles: each particle's rates are its own, whichever
-         * thread computes them */
-        size_t t = (size_t)omp_get_thread_num(), n_threads = (size_t)omp_get_num_threads();
-        size_t first = n_blocks * t / n_threads * LANES;
-        size_t end = n_blocks * (t + 1) / n_threads * LANES;
-        if (end > p->n_fluid) end = p->n_fluid;
-        if (first < end) {
-            if (lanes)
-                rhs_range_lanes(pp, p, nl, first, end, frame, eta, out);
-            else
-                rhs_range_scalar(pp, p, nl, first, end, frame, eta, out);
-        }
-    }
 }
 
 void rhs_compute(const physics_params *pp, const particles *p, const neighbour_list *nl,
                  const tank_frame *frame, double eta, const rates *out)
 {
-    rhs_compute_with(pp, p, nl, frame, eta, out, rhs_lanes_available());
+    bool lanes = lanes_in_use();
+    PARALLEL_FOR_LANE_BLOCKS(p->n_fluid, first, end,
+                             lanes ? rhs_range_lanes(pp, p, nl, first, end, frame, eta, out)
+                                   : rhs_range_scalar(pp, p, nl, first, end, frame, eta, out));
 }

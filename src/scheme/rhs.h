@@ -25,15 +25,7 @@ typedef struct {
  * have been computed when eta > 0). */
 void rhs_compute(const physics_params *pp, const particles *p, const neighbour_list *nl,
                  const tank_frame *frame, double eta, const rates *out);
-
-#define rhs_compute_with     DIM_NAME(rhs_compute_with)
-#define rhs_lanes_available  DIM_NAME(rhs_lanes_available)
-/* Whether this processor runs the four-lane sums (AVX2, x86-64-v3); rhs_compute uses them
- * then. Both ways give the same bits (scheme/rhs_sums.h). */
-bool rhs_lanes_available(void);
-/* rhs_compute, the lanes on (`lanes`, only where rhs_lanes_available()) or off: for the tests
- * that hold the two to the same bits. */
-void rhs_compute_with(const physics_params *pp, const particles *p, const neighbour_list *nl,
-                      const tank_frame *frame, double eta, const rates *out, bool lanes);
+/* (Four particles at a time in SIMD lanes where core/lanes.h's lanes_in_use(): the same bits,
+ * scheme/rhs_sums.h.) */
 
 #endif

@@ -2,12 +2,11 @@
  * the same sums for four particles side by side in SIMD lanes (core/lanes.h). The lane version
  * transcribes the scalar one operation by operation, each pair function of src/physics (named
  * in its comments) written out in lane types in the same order, so both give the same bits;
- * tests/test_rhs_lanes.c holds them to it. */
+ * tests/test_lanes.c holds them to it. */
 #ifndef VCSPH_RHS_SUMS_H
 #define VCSPH_RHS_SUMS_H
 
-#include "core/lanes.h"
-#include "core/pair.h"
+#include "core/lane_pairs.h"
 #include "physics/ale.h"
 #include "physics/continuity.h"
 #include "scheme/momentum.h"
@@ -19,9 +18,9 @@ typedef struct {
     vec force; /* per unit volume */
 } rhs_sums;
 
-__attribute__((always_inline)) static inline rhs_sums rhs_particle_sums(const physics_params *pp, const particles *p,
-                                         const neighbour_list *nl, size_t i, const bool les,
-                                         const bool ale, const bool variable_mass)
+__attribute__((always_inline)) static inline rhs_sums
+rhs_particle_sums(const physics_params *pp, const particles *p, const neighbour_list *nl, size_t i,
+                  const bool les, const bool ale, const bool variable_mass)
 {
     const kernel *k = &pp->k;
     momentum_particle mi = momentum_particle_of(pp, p, i);
@@ -50,43 +49,23 @@ __attribute__((always_inline)) static inline rhs_sums rhs_particle_sums(const ph
 /* The same sums for the four particles i0 .. i0 + 3, one per lane (core/lanes.h): every
  * operation is the scalar one's, in the same order, so the sums are the same to the bit. A lane
  * whose row has ended, or whose neighbour lies beyond 2h, leaves its sums as they are. */
-__attribute__((always_inline)) static inline void rhs_lanes_sums(const physics_params *pp, const particles *p,
-                                  const neighbour_list *nl, size_t i0, const bool les,
-                                  const bool ale, const bool variable_mass, rhs_sums out[LANES])
+__attribute__((always_inline)) static inline void
+rhs_lanes_sums(const physics_params *pp, const particles *p, const neighbour_list *nl, size_t i0,
+               const bool les, const bool ale, const bool variable_mass, rhs_sums out[LANES])
 {
-    const kernel *k = &pp->k;
     const double k_visc = 2.0 * (DIM + 2);
-    lane_vec xi = lane_vec_load(p->x, i0), ui = lane_vec_load(p->u, i0);
+    lane_vec ui = lane_vec_load(p->u, i0);
     lane_vec uwi = lane_vec_load(p->u_wall, i0), dui = lane_vec_load(p->shift, i0);
     lane_real rhoi = lane_load(p->rho, i0), vi = lane_load(p->vol, i0);
     lane_real pi = lane_load(p->p, i0), nu_ti = lane_load(p->nu_t, i0);
     lane_real drho = lane_broadcast(0.0), mass_flux = lane_broadcast(0.0);
-    lane_vec force;
-    for (int d = 0; d < DIM; d++) force.c[d] = lane_broadcast(0.0);
-    const int32_t *row[LANES];
-    int32_t count[LANES], most = 0;
-    for (int l = 0; l < LANES; l++) {
-        row[l] = neighbour_row(nl, i0 + (size_t)l);
-        count[l] = nl->count[i0 + (size_t)l];
-        if (count[l] > most) most = count[l];
-    }
-    for (int32_t n = 0; n < most; n++) {
-        int32_t j[LANES];
-        lane_mask active, wall = {0, 0, 0, 0};
-        for (int l = 0; l < LANES; l++) {
-            active[l] = n < count[l] ? -1 : 0;
-            j[l] = n < count[l] ? row[l][n] : (int32_t)(i0 + (size_t)l);
-            if (variable_mass) wall[l] = particle_is_wall_image(p, (size_t)j[l]) ? -1 : 0;
-        }
-        lane_vec r_ji = lane_vec_sub(lane_vec_gather(p->x, j), xi);
-        lane_real r2 = lane_vec_dot(r_ji, r_ji);
-        lane_mask within = active & (r2 < lane_broadcast(k->support2));
-        if (!(within[0] | within[1] | within[2] | within[3])) continue;
-        /* kernel_f */
-        lane_real q = lane_sqrt(r2) * k->inv_h;
-        lane_real sq = 1.0 - 0.5 * q;
-        lane_real f = lane_select(q >= 2.0, lane_broadcast(0.0), k->f_norm * sq * sq * sq);
-
+    lane_vec force = lane_vec_zero();
+    lane_pair pr;
+    FOR_EACH_LANE_PAIR (&pp->k, p->x, nl, i0, pr) {
+        const int32_t *j = pr.j;
+        lane_mask within = pr.within;
+        lane_vec r_ji = pr.r_ji;
+        lane_real f = pr.f, r2 = pr.r2;
         lane_real vj = lane_gather(p->vol, j);
         lane_vec uj = lane_vec_gather(p->u, j);
         lane_vec u_ji = lane_vec_sub(uj, ui);
@@ -101,14 +80,19 @@ __attribute__((always_inline)) static inline void rhs_lanes_sums(const physics_p
             lane_real flux =
                 lane_vec_dot(lane_vec_axpy(lane_vec_scale(dui, rhoi), rhoj, duj), r_ji) * f;
             drho = lane_select(within, drho + flux * vj, drho);
-            if (variable_mass) mass_flux = lane_select(within & ~wall, mass_flux + flux * vi * vj, mass_flux);
+            if (variable_mass) {
+                lane_mask fluid;
+                for (int l = 0; l < LANES; l++)
+                    fluid[l] = particle_is_wall_image(p, (size_t)j[l]) ? 0 : -1;
+                mass_flux = lane_select(within & fluid, mass_flux + flux * vi * vj, mass_flux);
+            }
         }
         /* continuity_pair */
         drho = lane_select(within, drho + -rhoi * lane_vec_dot(transport_ji, r_ji) * f * vj, drho);
         /* momentum_pair_add */
         if (ale)
-            force = lane_vec_add_where(within, force,
-                                       lane_vec_scale(u_ji, rhoj * lane_vec_dot(duj, r_ji) * f * vj));
+            force = lane_vec_add_where(
+                within, force, lane_vec_scale(u_ji, rhoj * lane_vec_dot(duj, r_ji) * f * vj));
         lane_real pj = lane_gather(p->p, j);
         force = lane_vec_add_where(within, force, lane_vec_scale(r_ji, -(pi + pj) * f * vj));
         lane_real mu_eff = lane_broadcast(pp->rho0 * pp->nu);

@@ -1,0 +1,158 @@
+/* The passes' four-lane forms (core/lanes.h) give the scalar forms' bits, on a disordered block
+ * of liquid in a tank (wall ghosts, random velocities, shifting): the right-hand side's rates in
+ * every variant of its loop (LES on and off, shifting on and off, constant and variable masses),
+ * and every field of a few whole steps. A particle count that is not a multiple of four takes
+ * the scalar tail too. Skipped on a processor without AVX2, where only the scalar forms run. */
+#include "core/lanes_switch.h"
+#include "scheme/rhs.h"
+#include "scheme/solver.h"
+
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+#include <cmocka.h>
+
+#if DIM == 2
+static const char block_case[] = "[case]\nname = block\ndim = 2\nt_end = 1\n"
+                                 "[tank]\nlength = 0.4\nheight = 0.3\n"
+                                 "[liquid]\nheight = 0.2\n[model]\nscheme = delta-plus-ale\n"
+                                 "les = true\n[numerics]\nresolution = 19\n";
+#else
+static const char block_case[] = "[case]\nname = block\ndim = 3\nt_end = 1\n"
+                                 "[tank]\nlength = 0.24\nheight = 0.2\nwidth = 0.12\n"
+                                 "[liquid]\nheight = 0.12\n[model]\nscheme = delta-plus-ale\n"
+                                 "les = true\n[numerics]\nresolution = 11\n";
+#endif
+
+/* a small deterministic generator: the same numbers everywhere */
+static double uniform(uint64_t *state)
+{
+    *state = *state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return (double)(*state >> 11) / 9007199254740992.0 * 2.0 - 1.0;
+}
+
+/* rates of n particles, one array per integrated component */
+typedef struct {
+    double *data;
+    rates r;
+} rate_arrays;
+
+static void rate_arrays_alloc(rate_arrays *a, size_t n)
+{
+    a->data = calloc(n * PARTICLE_N_INTEGRATED, sizeof(double));
+    assert_non_null(a->data);
+    double *next = a->data;
+#define RATE_ARRAY_SCALAR(name) a->r.d##name = next, next += n;
+#define RATE_ARRAY_VECTOR(name)                                                                    \
+    for (int d = 0; d < DIM; d++) a->r.d##name[d] = next, next += n;
+    PARTICLE_INTEGRATED(RATE_ARRAY_SCALAR, RATE_ARRAY_VECTOR)
+}
+
+/* The block of block_case, every particle moved by up to 0.2 dr and given a random velocity of
+ * the order of the shifting's U_max, prepared for its first step. */
+static void disordered_block(config *cfg, solver *s)
+{
+    char err[1024];
+    if (config_load_string(cfg, block_case, "test", NULL, 0, err, sizeof err)) fail_msg("%s", err);
+    if (solver_init(s, cfg, err, sizeof err)) fail_msg("%s", err);
+    particles *p = &s->p;
+    uint64_t st = 7;
+    for (size_t i = 0; i < p->n_fluid; i++)
+        for (int d = 0; d < DIM; d++) {
+            p->x[d][i] += 0.2 * s->dv.dr * uniform(&st);
+            p->u[d][i] = s->pp.shift_u_max * uniform(&st);
+        }
+    assert_int_equal(solver_prepare(s, cfg->t_end), 0);
+    assert_true(p->n_fluid % 4 != 0); /* the scalar tail runs too */
+}
+
+/* n_values doubles at a and b: how many differ in their bits */
+static size_t differing(const double *a, const double *b, size_t n_values)
+{
+    size_t differ = 0;
+    for (size_t v = 0; v < n_values; v++) differ += memcmp(&a[v], &b[v], sizeof(double)) != 0;
+    return differ;
+}
+
+static void test_rhs_lanes_give_the_scalar_bits(void **state)
+{
+    (void)state;
+    lanes_turn_off(false);
+    if (!lanes_in_use()) skip();
+    config cfg;
+    solver s;
+    disordered_block(&cfg, &s);
+    particles *p = &s.p;
+    tank_frame frame = solver_frame(&s, 0.0);
+    size_t n = p->n_fluid, n_values = n * PARTICLE_N_INTEGRATED;
+    rate_arrays scalar, lanes;
+    rate_arrays_alloc(&scalar, n);
+    rate_arrays_alloc(&lanes, n);
+    for (int les = 0; les <= 1; les++)
+        for (int shifting = 0; shifting <= 1; shifting++)
+            for (int variable_mass = 0; variable_mass <= shifting; variable_mass++) {
+                s.pp.les = les;
+                s.pp.shifting = shifting;
+                double eta = variable_mass ? 1.0 : 0.0;
+                lanes_turn_off(true);
+                rhs_compute(&s.pp, p, &s.nl, &frame, eta, &scalar.r);
+                lanes_turn_off(false);
+                rhs_compute(&s.pp, p, &s.nl, &frame, eta, &lanes.r);
+                size_t differ = differing(scalar.data, lanes.data, n_values);
+                if (differ)
+                    fail_msg("les %d, shifting %d, variable masses %d: %zu of %zu rates differ",
+                             les, shifting, variable_mass, differ, n_values);
+            }
+    /* the comparison compared something: forces and density rates are not all zero */
+    double largest = 0.0;
+    for (size_t v = 0; v < n_values; v++) largest = fmax(largest, fabs(lanes.data[v]));
+    assert_true(largest > 0.0);
+    free(scalar.data);
+    free(lanes.data);
+    solver_free(&s);
+}
+
+/* The fields of the fluid that every pass writes, compared after a few whole steps */
+#define FLUID_FIELDS(SCALAR, VECTOR)                                                               \
+    VECTOR(x)                                                                                      \
+    VECTOR(u) SCALAR(rho) SCALAR(m) SCALAR(p) SCALAR(lambda) SCALAR(kernel_sum) SCALAR(gamma)      \
+        VECTOR(normal) VECTOR(grad_rho) SCALAR(nu_t) SCALAR(nu_delta) VECTOR(shift)                \
+            VECTOR(correction) SCALAR(diff_rho) SCALAR(diff_m)
+
+static void test_steps_with_lanes_give_the_scalar_bits(void **state)
+{
+    (void)state;
+    lanes_turn_off(false);
+    if (!lanes_in_use()) skip();
+    config cfg;
+    solver scalar, lanes;
+    lanes_turn_off(true);
+    disordered_block(&cfg, &scalar);
+    for (int step = 0; step < 5; step++) assert_int_equal(solver_step(&scalar, cfg.t_end), 0);
+    lanes_turn_off(false);
+    disordered_block(&cfg, &lanes);
+    for (int step = 0; step < 5; step++) assert_int_equal(solver_step(&lanes, cfg.t_end), 0);
+    size_t n = scalar.p.n_fluid;
+    assert_int_equal(lanes.p.n_fluid, n);
+    assert_true(lanes.t > 0.0 && memcmp(&lanes.t, &scalar.t, sizeof(double)) == 0);
+#define COMPARE_SCALAR(name)                                                                       \
+    if (differing(scalar.p.name, lanes.p.name, n))                                                 \
+        fail_msg(#name ": %zu of %zu values differ", differing(scalar.p.name, lanes.p.name, n), n);
+#define COMPARE_VECTOR(name)                                                                       \
+    for (int d = 0; d < DIM; d++) COMPARE_SCALAR(name[d])
+    FLUID_FIELDS(COMPARE_SCALAR, COMPARE_VECTOR)
+    solver_free(&scalar);
+    solver_free(&lanes);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_rhs_lanes_give_the_scalar_bits),
+        cmocka_unit_test(test_steps_with_lanes_give_the_scalar_bits),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
