@@ -28,8 +28,6 @@ typedef struct {
 
 LANE_INLINE lane_real lane_broadcast(double a) { return (lane_real){a, a, a, a}; }
 
-
-
 /* m ? a : b, lane by lane */
 LANE_INLINE lane_real lane_select(lane_mask m, lane_real a, lane_real b)
 {

@@ -59,7 +59,7 @@ static inline int32_t pairs_gather(const kernel *k, double *const x[DIM], const 
  * chain of dependent operations after the other's. */
 #define FOR_EACH_PAIR(k, x, nl, i, xi, pr)                                                         \
     for (pair pr##_all[(nl)->count[i] + 1],                                                        \
-         *pr##_end = pr##_all + pairs_gather(k, x, nl, i, xi, pr##_all), *pr##_at = pr##_all;     \
+         *pr##_end = pr##_all + pairs_gather(k, x, nl, i, xi, pr##_all), *pr##_at = pr##_all;      \
          pr##_at < pr##_end && ((pr) = *pr##_at, true); pr##_at++)
 
 /* A parallel loop over the fluid whose work lies in S_F: S_F is a few layers of a fluid sorted

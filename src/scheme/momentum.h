@@ -30,9 +30,9 @@ static inline momentum_particle momentum_particle_of(const physics_params *pp, c
  * (`ale`) the ALE term rho (du . grad) u, then the pressure gradient, then the viscous term
  * with LES's eddy viscosity (`les`); added one by one in this order, as the sums of Eq. (3)
  * always have been. */
-__attribute__((always_inline)) static inline vec momentum_pair_add(vec force, const physics_params *pp, const particles *p,
-                                    const momentum_particle *mi, const pair *pr, const bool les,
-                                    const bool ale)
+__attribute__((always_inline)) static inline vec
+momentum_pair_add(vec force, const physics_params *pp, const particles *p,
+                  const momentum_particle *mi, const pair *pr, const bool les, const bool ale)
 {
     size_t j = pr->j;
     double vj = p->vol[j];
