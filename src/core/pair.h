@@ -62,6 +62,16 @@ static inline int32_t pairs_gather(const kernel *k, double *const x[DIM], const 
          *pr##_end = pr##_all + pairs_gather(k, x, nl, i, xi, pr##_all), *pr##_at = pr##_all;      \
          pr##_at < pr##_end && ((pr) = *pr##_at, true); pr##_at++)
 
+/* FOR_EACH_PAIR over the neighbours for which `keep` holds, an expression of `pr.j` tested
+ * before any geometry: for a pass that reads only a few of the neighbours (the free surface's)
+ * of many particles. The same pairs as FOR_EACH_PAIR with `if (!keep) continue;` in its body, in
+ * the same order, without the square root and kernel of the others. */
+#define FOR_EACH_PAIR_WHERE(k, x, nl, i, xi, pr, keep)                                             \
+    for (int32_t pr##_at = 0; pr##_at < (nl)->count[i]; pr##_at++)                                 \
+        if (((pr).j = (size_t)neighbour_row(nl, i)[pr##_at], !(keep)) ||                           \
+            !pair_of(k, x, xi, neighbour_row(nl, i), pr##_at, &(pr))) {                            \
+        } else
+
 /* A parallel loop over the fluid whose work lies in S_F: S_F is a few layers of a fluid sorted
  * by cell, so static chunks would give one thread most of it. Each particle must write only
  * its own entries, so that the result does not depend on the schedule. */

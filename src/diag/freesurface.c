@@ -66,6 +66,12 @@ static int covered(const kernel *k, const particles *p, const neighbour_list *nl
  * distances that differ in the last bits (1e-9 relative is 1e-12 m at dr = 1 mm). */
 static inline int is_tie(double r2, double nearest2) { return r2 <= nearest2 * (1.0 + 1e-9); }
 
+/* Whether neighbour j is a fluid particle on the free surface (found by the first loop). */
+static inline bool free_surface_neighbour(const particles *p, size_t j)
+{
+    return !particle_is_wall_image(p, j) && p->is_free[j];
+}
+
 void freesurface_detect(const kernel *k, double dr, double normal_reference, particles *p,
                         const neighbour_list *nl)
 {
@@ -102,20 +108,16 @@ void freesurface_detect(const kernel *k, double dr, double normal_reference, par
         vec xi = vec_load(p->x, i);
         double nearest2 = INFINITY;
         pair pr;
-        FOR_EACH_PAIR (k, p->x, nl, i, xi, pr) {
-            if (!particle_is_wall_image(p, pr.j) && p->is_free[pr.j])
-                nearest2 = fmin(nearest2, pr.r * pr.r);
-        }
+        FOR_EACH_PAIR_WHERE (k, p->x, nl, i, xi, pr, free_surface_neighbour(p, pr.j))
+            nearest2 = fmin(nearest2, pr.r * pr.r);
         if (nearest2 == INFINITY) {
             p->surface[i] = SURFACE_INTERIOR;
             continue;
         }
         p->surface[i] = SURFACE_REGION;
         vec sum = vec_zero();
-        FOR_EACH_PAIR (k, p->x, nl, i, xi, pr) {
-            if (!particle_is_wall_image(p, pr.j) && p->is_free[pr.j] &&
-                is_tie(pr.r * pr.r, nearest2))
-                sum = vec_add(sum, vec_load(p->normal, pr.j));
+        FOR_EACH_PAIR_WHERE (k, p->x, nl, i, xi, pr, free_surface_neighbour(p, pr.j)) {
+            if (is_tie(pr.r * pr.r, nearest2)) sum = vec_add(sum, vec_load(p->normal, pr.j));
         }
         double length = vec_norm(sum);
         if (length > 0.0) vec_store(p->normal, i, vec_scale(sum, 1.0 / length));
