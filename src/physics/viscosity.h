@@ -8,14 +8,15 @@
 #define SMAGORINSKY_CS    0.18 /* C_S, sec. 2.2 */
 #define VAN_DRIEST_A_PLUS 26.0
 
+#define VISCOSITY_K (2.0 * (DIM + 2)) /* K = 2(n + 2) of Eq. (4) */
+
 /* K (mu + mu^T_ij) pi_ij grad_i W_ij V_j, K = 2(n+2), pi_ij = u_ji . r_ji / |r_ji|^2
  * (force per unit volume on i). Particles approaching each other (pi < 0) are pushed apart. */
 static inline vec viscosity_pair(double mu_eff, vec u_ji, vec r_ji, double r2, double f_ij,
                                  double vol_j)
 {
-    const double k_visc = 2.0 * (DIM + 2);
     double pi_ij = vec_dot(u_ji, r_ji) / r2;
-    return vec_scale(r_ji, k_visc * mu_eff * pi_ij * f_ij * vol_j);
+    return vec_scale(r_ji, VISCOSITY_K * mu_eff * pi_ij * f_ij * vol_j);
 }
 
 /* Harmonic mean 2 a b / (a + b) used for mu^T_ij and delta_ij (Eqs. 4, 5); 0 when both are 0,

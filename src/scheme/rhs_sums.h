@@ -53,7 +53,6 @@ __attribute__((always_inline)) static inline void
 rhs_lanes_sums(const physics_params *pp, const particles *p, const neighbour_list *nl, size_t i0,
                const bool les, const bool ale, const bool variable_mass, rhs_sums out[LANES])
 {
-    const double k_visc = 2.0 * (DIM + 2);
     lane_vec ui = lane_vec_load(p->u, i0);
     lane_vec uwi = lane_vec_load(p->u_wall, i0), dui = lane_vec_load(p->shift, i0);
     lane_real rhoi = lane_load(p->rho, i0), vi = lane_load(p->vol, i0);
@@ -106,7 +105,7 @@ rhs_lanes_sums(const physics_params *pp, const particles *p, const neighbour_lis
         lane_vec uw_ji = lane_vec_sub(lane_vec_gather(p->u_wall, j), uwi);
         lane_real pi_ij = lane_vec_dot(uw_ji, r_ji) / r2;
         force = lane_vec_add_where(within, force,
-                                   lane_vec_scale(r_ji, k_visc * mu_eff * pi_ij * f * vj));
+                                   lane_vec_scale(r_ji, VISCOSITY_K * mu_eff * pi_ij * f * vj));
     }
     for (int l = 0; l < LANES; l++) {
         out[l].drho = drho[l];
