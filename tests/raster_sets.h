@@ -5,6 +5,7 @@
 #define VCSPH_TEST_RASTER_SETS_H
 
 #include "diag/raster.h"
+#include "noise.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -60,13 +61,6 @@ static inline void add_block(cloud *c, int dim, const int n[3], double s, const 
             for (int i = 0; i < n[0]; i++)
                 cloud_add(c, o[0] + (i + 0.5) * s, o[1] + (j + 0.5) * s,
                           dim == 3 ? o[2] + (k + 0.5) * s : 0.0);
-}
-
-/* uniform in [-1, 1), a fixed sequence (64-bit LCG, Knuth's MMIX constants) */
-static inline double noise(uint64_t *state)
-{
-    *state = *state * 6364136223846793005ULL + 1442695040888963407ULL;
-    return (double)(*state >> 11) / 4503599627370496.0 - 1.0;
 }
 
 static inline double gm_volume(int dim, const cloud *c, const double size[3],

@@ -15,6 +15,8 @@
 #include <string.h>
 #include <cmocka.h>
 
+#include "disordered_block.h"
+
 #if DIM == 2
 static const char block_case[] = "[case]\nname = block\ndim = 2\nt_end = 1\n"
                                  "[tank]\nlength = 0.4\nheight = 0.3\n"
@@ -26,13 +28,6 @@ static const char block_case[] = "[case]\nname = block\ndim = 3\nt_end = 1\n"
                                  "[liquid]\nheight = 0.12\n[model]\nscheme = delta-plus-ale\n"
                                  "les = true\n[numerics]\nresolution = 11\n";
 #endif
-
-/* a small deterministic generator: the same numbers everywhere */
-static double uniform(uint64_t *state)
-{
-    *state = *state * 6364136223846793005ULL + 1442695040888963407ULL;
-    return (double)(*state >> 11) / 9007199254740992.0 * 2.0 - 1.0;
-}
 
 /* rates of n particles, one array per integrated component */
 typedef struct {
@@ -51,22 +46,12 @@ static void rate_arrays_alloc(rate_arrays *a, size_t n)
     PARTICLE_INTEGRATED(RATE_ARRAY_SCALAR, RATE_ARRAY_VECTOR)
 }
 
-/* The block of block_case, every particle moved by up to 0.2 dr and given a random velocity of
- * the order of the shifting's U_max, prepared for its first step. */
-static void disordered_block(config *cfg, solver *s)
+/* The block of block_case, disordered (disordered_block.h): a particle count that is not a
+ * multiple of four, so that the scalar tail runs too. */
+static void lanes_block(config *cfg, solver *s)
 {
-    char err[1024];
-    if (config_load_string(cfg, block_case, "test", NULL, 0, err, sizeof err)) fail_msg("%s", err);
-    if (solver_init(s, cfg, err, sizeof err)) fail_msg("%s", err);
-    particles *p = &s->p;
-    uint64_t st = 7;
-    for (size_t i = 0; i < p->n_fluid; i++)
-        for (int d = 0; d < DIM; d++) {
-            p->x[d][i] += 0.2 * s->dv.dr * uniform(&st);
-            p->u[d][i] = s->pp.shift_u_max * uniform(&st);
-        }
-    assert_int_equal(solver_prepare(s, cfg->t_end), 0);
-    assert_true(p->n_fluid % 4 != 0); /* the scalar tail runs too */
+    disordered_block(block_case, 0.2, 7, cfg, s);
+    assert_true(s->p.n_fluid % 4 != 0);
 }
 
 /* n_values doubles at a and b: how many differ in their bits */
@@ -84,7 +69,7 @@ static void test_rhs_lanes_give_the_scalar_bits(void **state)
     if (!lanes_in_use()) skip();
     config cfg;
     solver s;
-    disordered_block(&cfg, &s);
+    lanes_block(&cfg, &s);
     particles *p = &s.p;
     tank_frame frame = solver_frame(&s, 0.0);
     size_t n = p->n_fluid, n_values = n * PARTICLE_N_INTEGRATED;
@@ -116,11 +101,12 @@ static void test_rhs_lanes_give_the_scalar_bits(void **state)
 }
 
 /* The fields of the fluid that every pass writes, compared after a few whole steps */
+// clang-format off
 #define FLUID_FIELDS(SCALAR, VECTOR)                                                               \
-    VECTOR(x)                                                                                      \
-    VECTOR(u) SCALAR(rho) SCALAR(m) SCALAR(p) SCALAR(lambda) SCALAR(kernel_sum) SCALAR(gamma)      \
-        VECTOR(normal) VECTOR(grad_rho) SCALAR(nu_t) SCALAR(nu_delta) VECTOR(shift)                \
-            VECTOR(correction) SCALAR(diff_rho) SCALAR(diff_m)
+    VECTOR(x) VECTOR(u) SCALAR(rho) SCALAR(m) SCALAR(p)                                            \
+    SCALAR(lambda) SCALAR(kernel_sum) SCALAR(gamma) VECTOR(normal) VECTOR(grad_rho)                \
+    SCALAR(nu_t) SCALAR(nu_delta) VECTOR(shift) VECTOR(correction) SCALAR(diff_rho) SCALAR(diff_m)
+// clang-format on
 
 static void test_steps_with_lanes_give_the_scalar_bits(void **state)
 {
@@ -130,10 +116,10 @@ static void test_steps_with_lanes_give_the_scalar_bits(void **state)
     config cfg;
     solver scalar, lanes;
     lanes_turn_off(true);
-    disordered_block(&cfg, &scalar);
+    lanes_block(&cfg, &scalar);
     for (int step = 0; step < 5; step++) assert_int_equal(solver_step(&scalar, cfg.t_end), 0);
     lanes_turn_off(false);
-    disordered_block(&cfg, &lanes);
+    lanes_block(&cfg, &lanes);
     for (int step = 0; step < 5; step++) assert_int_equal(solver_step(&lanes, cfg.t_end), 0);
     size_t n = scalar.p.n_fluid;
     assert_int_equal(lanes.p.n_fluid, n);

@@ -11,6 +11,7 @@
 #include <cmocka.h>
 
 #include "check.h"
+#include "disordered_block.h"
 
 #if DIM == 2
 static const char block_case[] = "[case]\nname = block\ndim = 2\nt_end = 1\n"
@@ -23,36 +24,6 @@ static const char block_case[] = "[case]\nname = block\ndim = 3\nt_end = 1\n"
                                  "[liquid]\nheight = 0.12\n[model]\nscheme = delta-plus\n"
                                  "[numerics]\nresolution = 12\n";
 #endif
-
-/* a small deterministic generator: the same numbers everywhere */
-static double uniform(uint64_t *state)
-{
-    *state = *state * 6364136223846793005ULL + 1442695040888963407ULL;
-    return (double)(*state >> 11) / 9007199254740992.0 * 2.0 - 1.0;
-}
-
-/* The block with every particle moved by up to `frac` dr and given a random velocity of the
- * order of U_max, so that the limiter of Eq. (7) (max |u_ij| / 2) does not hold it back. */
-static void disorder(solver *s, double frac, uint64_t seed)
-{
-    particles *p = &s->p;
-    uint64_t st = seed;
-    for (size_t i = 0; i < p->n_fluid; i++)
-        for (int d = 0; d < DIM; d++) {
-            p->x[d][i] += frac * s->dv.dr * uniform(&st);
-            p->u[d][i] = s->pp.shift_u_max * uniform(&st);
-        }
-}
-
-/* The block of block_case, disordered, with the geometry and shifting of its first step. */
-static void disordered_block(config *cfg, solver *s, double frac, uint64_t seed)
-{
-    char err[1024];
-    if (config_load_string(cfg, block_case, "test", NULL, 0, err, sizeof err)) fail_msg("%s", err);
-    if (solver_init(s, cfg, err, sizeof err)) fail_msg("%s", err);
-    disorder(s, frac, seed);
-    assert_int_equal(solver_prepare(s, cfg->t_end), 0);
-}
 
 static int deep_inside(const solver *s, size_t i)
 {
@@ -86,7 +57,7 @@ static void test_shifting_regularises(void **state)
     (void)state;
     config cfg;
     solver s;
-    disordered_block(&cfg, &s, 0.2, 42);
+    disordered_block(block_case, 0.2, 42, &cfg, &s);
     double before = lambda_spread(&s), tau = s.dt;
     for (int k = 0; k < 40; k++) {
         particles *p = &s.p;
@@ -109,7 +80,7 @@ static void test_no_normal_shifting_at_surface(void **state)
     (void)state;
     config cfg;
     solver s;
-    disordered_block(&cfg, &s, 0.1, 7);
+    disordered_block(block_case, 0.1, 7, &cfg, &s);
     const particles *p = &s.p;
     size_t checked = 0, moving = 0;
     for (size_t i = 0; i < p->n_fluid; i++) {

@@ -1,6 +1,6 @@
 /* lane_pairs: FOR_EACH_PAIR for four particles side by side (core/lanes.h). Step n gives each
  * lane the n-th entry of its own particle's row, with the pair geometry of pair_of (r_ji, r^2,
- * r, F) computed by the same operations, and a mask of the lanes whose entry exists and lies
+ * F) computed by the same operations, and a mask of the lanes whose entry exists and lies
  * within 2h: a pass adds a lane's pair term only where the mask is set, so each particle's sums
  * see its pairs in its row's order, as in the scalar loop. */
 #ifndef VCSPH_LANE_PAIRS_H
@@ -15,7 +15,7 @@ typedef struct {
     int32_t j[LANES]; /* the lane's neighbour; the particle itself past the end of its row */
     lane_mask within; /* the lane has a pair at this step: within 2h */
     lane_vec r_ji;
-    lane_real r2, r, f;
+    lane_real r2, f;
 } lane_pair;
 
 /* The rows of particles i0 .. i0 + 3 and their positions. */
@@ -60,8 +60,7 @@ LANE_INLINE bool lane_pair_at(const kernel *k, double *const x[DIM], const lane_
     pr->r2 = lane_vec_dot(pr->r_ji, pr->r_ji);
     pr->within = active & (pr->r2 < lane_broadcast(k->support2));
     if (!(pr->within[0] | pr->within[1] | pr->within[2] | pr->within[3])) return false;
-    pr->r = lane_sqrt(pr->r2);
-    pr->f = lane_kernel_f(k, pr->r);
+    pr->f = lane_kernel_f(k, lane_sqrt(pr->r2));
     return true;
 }
 
@@ -76,22 +75,5 @@ LANE_INLINE bool lane_pair_at(const kernel *k, double *const x[DIM], const lane_
         for (int32_t pr##_n = 0; pr##_n < pr##_rows.most; pr##_n++)                                \
             if (!lane_pair_at(k, x, &pr##_rows, i0, pr##_n, &(pr))) {                              \
             } else
-
-/* Runs range(first, end) over [0, n) in blocks of LANES particles, statically shared among
- * the threads: each particle's results are its own, whichever thread computes them. `range`
- * is an expression of `first` and `end`. */
-#define PARALLEL_FOR_LANE_BLOCKS(n, first, end, range)                                             \
-    do {                                                                                           \
-        size_t lane_blocks_n_ = (n);                                                               \
-        _Pragma("omp parallel for schedule(static)") for (size_t lane_block_ = 0;                  \
-                                                          lane_block_ <                            \
-                                                          (lane_blocks_n_ + LANES - 1) / LANES;    \
-                                                          lane_block_++)                           \
-        {                                                                                          \
-            size_t first = lane_block_ * LANES;                                                    \
-            size_t end = first + LANES < lane_blocks_n_ ? first + LANES : lane_blocks_n_;          \
-            range;                                                                                 \
-        }                                                                                          \
-    } while (0)
 
 #endif

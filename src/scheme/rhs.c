@@ -28,37 +28,34 @@ static inline void rhs_particle_finish(const physics_params *pp, const particles
     out->dm[i] = variable_mass ? eta * (s.mass_flux + p->diff_m[i]) : 0.0;
 }
 
-/* The particles [first, end), first a multiple of LANES: four at a time in lanes where `lanes`
- * and four remain, else one by one. `les`, `ale` and `variable_mass` are compile-time constants
- * at each call below, so the code is specialised once per variant, never tested per pair
+/* The particles [i0, end), at most LANES of them: in lanes where `lanes` and there are LANES,
+ * else one by one. `les`, `ale` and `variable_mass` are compile-time constants at each call
+ * below, so the code is specialised once per variant, never tested per pair
  * (docs/architecture.md). With ale (shifting on, Eq. 3): the particles move with u + du, the
  * continuity equation gains -rho_i du_ji . grad W V_j and the flux div(rho du), the momentum
  * equation rho (du . grad) u, and with variable masses dm/dt = eta [div(rho du) V_i + D^m]. */
 __attribute__((always_inline)) static inline void
-rhs_range_variant(const physics_params *pp, const particles *p, const neighbour_list *nl,
-                  size_t first, size_t end, const tank_frame *frame, const bool lanes,
-                  const bool les, const bool ale, const bool variable_mass, double eta,
-                  const rates *out)
+rhs_block_variant(const physics_params *pp, const particles *p, const neighbour_list *nl, size_t i0,
+                  size_t end, const tank_frame *frame, const bool lanes, const bool les,
+                  const bool ale, const bool variable_mass, double eta, const rates *out)
 {
-    for (size_t i0 = first; i0 < end; i0 += LANES) {
-        rhs_sums s[LANES];
-        size_t n = end - i0 < LANES ? end - i0 : LANES;
-        if (lanes && n == LANES)
-            rhs_lanes_sums(pp, p, nl, i0, les, ale, variable_mass, s);
-        else
-            for (size_t l = 0; l < n; l++)
-                s[l] = rhs_particle_sums(pp, p, nl, i0 + l, les, ale, variable_mass);
+    rhs_sums s[LANES];
+    size_t n = end - i0;
+    if (lanes && n == LANES)
+        rhs_lanes_sums(pp, p, nl, i0, les, ale, variable_mass, s);
+    else
         for (size_t l = 0; l < n; l++)
-            rhs_particle_finish(pp, p, i0 + l, frame, variable_mass, eta, s[l], out);
-    }
+            s[l] = rhs_particle_sums(pp, p, nl, i0 + l, les, ale, variable_mass);
+    for (size_t l = 0; l < n; l++)
+        rhs_particle_finish(pp, p, i0 + l, frame, variable_mass, eta, s[l], out);
 }
 
 __attribute__((always_inline)) static inline void
-rhs_range(const physics_params *pp, const particles *p, const neighbour_list *nl, size_t first,
+rhs_block(const physics_params *pp, const particles *p, const neighbour_list *nl, size_t i0,
           size_t end, const tank_frame *frame, double eta, const rates *out, const bool lanes)
 {
 #define RHS_VARIANT(les, ale, mass)                                                                \
-    rhs_range_variant(pp, p, nl, first, end, frame, lanes, les, ale, mass, eta, out)
+    rhs_block_variant(pp, p, nl, i0, end, frame, lanes, les, ale, mass, eta, out)
     /* variable masses come only with shifting (Table 1: eta = 1 implies xi = 1) */
     int variant = (pp->les ? 4 : 0) + (pp->shifting ? 2 : 0) + (pp->shifting && eta > 0.0);
     switch (variant) {
@@ -73,25 +70,33 @@ rhs_range(const physics_params *pp, const particles *p, const neighbour_list *nl
 }
 
 /* The lanes' form (core/lanes.h: compiled for AVX2, run where the processor has it). */
-LANES_TARGET static void rhs_range_lanes(const physics_params *pp, const particles *p,
-                                         const neighbour_list *nl, size_t first, size_t end,
+LANES_TARGET static void rhs_block_lanes(const physics_params *pp, const particles *p,
+                                         const neighbour_list *nl, size_t i0, size_t end,
                                          const tank_frame *frame, double eta, const rates *out)
 {
-    rhs_range(pp, p, nl, first, end, frame, eta, out, true);
+    rhs_block(pp, p, nl, i0, end, frame, eta, out, true);
 }
 
-static void rhs_range_scalar(const physics_params *pp, const particles *p, const neighbour_list *nl,
-                             size_t first, size_t end, const tank_frame *frame, double eta,
+static void rhs_block_scalar(const physics_params *pp, const particles *p, const neighbour_list *nl,
+                             size_t i0, size_t end, const tank_frame *frame, double eta,
                              const rates *out)
 {
-    rhs_range(pp, p, nl, first, end, frame, eta, out, false);
+    rhs_block(pp, p, nl, i0, end, frame, eta, out, false);
 }
 
 void rhs_compute(const physics_params *pp, const particles *p, const neighbour_list *nl,
                  const tank_frame *frame, double eta, const rates *out)
 {
     bool lanes = lanes_in_use();
-    PARALLEL_FOR_LANE_BLOCKS(p->n_fluid, first, end,
-                             lanes ? rhs_range_lanes(pp, p, nl, first, end, frame, eta, out)
-                                   : rhs_range_scalar(pp, p, nl, first, end, frame, eta, out));
+    size_t n = p->n_fluid;
+    /* blocks of LANES particles; each particle's rates are its own, whichever thread computes them
+     */
+#pragma omp parallel for schedule(static)
+    for (size_t i0 = 0; i0 < n; i0 += LANES) {
+        size_t end = i0 + LANES < n ? i0 + LANES : n;
+        if (lanes)
+            rhs_block_lanes(pp, p, nl, i0, end, frame, eta, out);
+        else
+            rhs_block_scalar(pp, p, nl, i0, end, frame, eta, out);
+    }
 }
