@@ -59,6 +59,21 @@ static long edbc(solver *s, const tank_frame *frame)
     return s->n_edbc;
 }
 
+static bool has_surface_tension(const solver *s) { return s->pp.surface_tension; }
+
+static bool needs_bodies(const solver *s)
+{
+    return s->pp.surface_tension || s->pp.volume_correction;
+}
+
+static long find_bodies(solver *s, const tank_frame *frame)
+{
+    (void)frame;
+    if (bodies_reserve(&s->bodies, s->p.n_fluid)) return -1;
+    bodies_find(&s->pp.k, &s->p, &s->nl, &s->bodies);
+    return 0;
+}
+
 static bool shifts(const solver *s) { return s->pp.shifting; }
 
 static long shifting(solver *s, const tank_frame *frame)
@@ -73,8 +88,7 @@ static bool corrects(const solver *s) { return s->pp.volume_correction; }
 static long correction(solver *s, const tank_frame *frame)
 {
     (void)frame;
-    volume_correction_apply(&s->pp, &s->p, &s->nl);
-    return 0;
+    return volume_correction_apply(&s->pp, &s->p, &s->nl, &s->bodies, &s->vc_work) ? -1 : 0;
 }
 
 static long bounce_back(solver *s, const tank_frame *frame)
@@ -89,15 +103,12 @@ static long frozen_terms(solver *s, const tank_frame *frame)
     return 0;
 }
 
-static bool has_surface_tension(const solver *s) { return s->pp.surface_tension; }
-
 /* the force of stage 0, and room for the other stages' */
 static long surface_tension(solver *s, const tank_frame *frame)
 {
     (void)frame;
     if (surface_tension_reserve(&s->st_work, s->p.n_total)) return -1;
-    surface_tension_find_bodies(&s->pp.k, &s->p, &s->nl, &s->st_work);
-    surface_tension_compute(&s->st, &s->pp.k, &s->p, &s->nl, &s->st_work);
+    surface_tension_compute(&s->st, &s->pp.k, &s->p, &s->nl, &s->bodies, &s->st_work);
     return 0;
 }
 
@@ -110,10 +121,12 @@ static const step_pass prepare_passes[] = {
          F(nu_delta) | F(surface) | F(is_free),
      NULL, geometry},
     {"eta control", F(kernel_sum) | F(surface), 0, has_eta_control, eta_control},
+    {"bodies", F(x) | F(surface), 0, needs_bodies, find_bodies},
     {"EdBC (Eq. 9)", F(surface) | F(lambda), F(rho) | F(p) | F(vol), NULL, edbc},
     {"shifting (Eq. 7)", F(x) | F(vol) | F(lambda) | F(normal) | F(surface), F(shift), shifts,
      shifting},
-    {"volume correction", F(x) | F(rho) | F(vol) | F(kernel_sum) | F(lambda) | F(surface),
+    {"volume correction",
+     F(x) | F(rho) | F(vol) | F(kernel_sum) | F(lambda) | F(normal) | F(surface),
      F(volume_mismatch) | F(correction), corrects, correction},
     {"bounce-back", F(x) | F(u) | F(shift) | F(correction), F(u) | F(shift) | F(correction), NULL,
      bounce_back},

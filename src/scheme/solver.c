@@ -98,6 +98,8 @@ void solver_free(solver *s)
     free(s->scratch);
     free(s->order);
     surface_tension_free(&s->st_work);
+    bodies_free(&s->bodies);
+    volume_correction_free(&s->vc_work);
     particles_free(&s->p);
     cells_free(&s->grid);
     neighbours_free(&s->nl);

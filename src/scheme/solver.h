@@ -14,6 +14,7 @@
 #include "scheme/physics_params.h"
 #include "scheme/rhs.h"
 #include "scheme/surface_tension.h"
+#include "scheme/volume_correction.h"
 
 /* integrated fluid variables (PARTICLE_INTEGRATED): x[DIM], u[DIM], rho, m */
 #define RK_VARS PARTICLE_N_INTEGRATED
@@ -38,19 +39,21 @@ typedef struct {
     double t, dt;   /* time; size of the prepared step */
     double last_dt; /* size of the step that ended at t */
     long step;
-    double max_acc;               /* largest |du/dt| of the last step (dt_a of Eq. 8) */
-    double skin;                  /* neighbour-list margin of this step */
-    double max_displacement;      /* largest move of a particle during the last step */
-    double work_in;               /* integral of the input power -sum m a_tank . u */
-    surface_tension_params st;    /* sigma and the calibration of the interface function */
-    surface_tension_work st_work; /* its work arrays, fluid and ghosts */
-    double work_st;               /* integral of the surface-tension power sum F^st . u */
-    double work_moves;            /* integral of the moves' potential power (integrate.c) */
-    eta_controller eta_control;   /* eta of Eq. (3): 1 = variable masses (delta-ALE), varied in
-                                     delta-plus-ALE by the switch (theory §8) */
-    long n_edbc;                  /* particles corrected by EdBC at the last step start */
-    int eta_switched;             /* the last solver_prepare switched eta ... */
-    char eta_switch_detail[160];  /* ... and how */
+    double max_acc;                 /* largest |du/dt| of the last step (dt_a of Eq. 8) */
+    double skin;                    /* neighbour-list margin of this step */
+    double max_displacement;        /* largest move of a particle during the last step */
+    double work_in;                 /* integral of the input power -sum m a_tank . u */
+    surface_tension_params st;      /* sigma and the calibration of the interface function */
+    surface_tension_work st_work;   /* its work arrays, fluid and ghosts */
+    bodies bodies;                  /* the step's bodies of liquid, for both of the above */
+    volume_correction_work vc_work; /* the correction's sums per body */
+    double work_st;                 /* integral of the surface-tension power sum F^st . u */
+    double work_moves;              /* integral of the moves' potential power (integrate.c) */
+    eta_controller eta_control;     /* eta of Eq. (3): 1 = variable masses (delta-ALE), varied in
+                                       delta-plus-ALE by the switch (theory §8) */
+    long n_edbc;                    /* particles corrected by EdBC at the last step start */
+    int eta_switched;               /* the last solver_prepare switched eta ... */
+    char eta_switch_detail[160];    /* ... and how */
 } solver;
 
 #define solver_init        DIM_NAME(solver_init)

@@ -36,7 +36,6 @@ int surface_tension_reserve(surface_tension_work *w, size_t n_total)
     }
     ok &= (w->kappa = malloc(n_total * sizeof(double))) != NULL;
     ok &= (w->band_sum = malloc(n_total * sizeof(double))) != NULL;
-    ok &= (w->parent = malloc(n_total * sizeof(int32_t))) != NULL;
     ok &= (w->body = malloc(n_total * sizeof(surface_body))) != NULL;
     if (!ok) {
         surface_tension_free(w);
@@ -54,7 +53,6 @@ void surface_tension_free(surface_tension_work *w)
     }
     free(w->kappa);
     free(w->band_sum);
-    free(w->parent);
     free(w->body);
     memset(w, 0, sizeof *w);
 }
@@ -209,65 +207,25 @@ static void band_force(const surface_tension_params *st, const kernel *k, partic
     }
 }
 
-/* Union-find over the fluid, each root the smallest index of its set (deterministic). */
-static int32_t find_root(int32_t *parent, int32_t a)
-{
-    while (parent[a] != a) {
-        parent[a] = parent[parent[a]];
-        a = parent[a];
-    }
-    return a;
-}
-
-static void unite(int32_t *parent, int32_t a, int32_t b)
-{
-    a = find_root(parent, a);
-    b = find_root(parent, b);
-    if (a < b) parent[b] = a;
-    if (b < a) parent[a] = b;
-}
-
-void surface_tension_find_bodies(const kernel *k, const particles *p, const neighbour_list *nl,
-                                 surface_tension_work *w)
-{
-    for (size_t i = 0; i < p->n_fluid; i++) {
-        w->parent[i] = (int32_t)i;
-        w->body[i].at_wall = 0;
-    }
-    for (size_t i = 0; i < p->n_fluid; i++) {
-        if (p->surface[i] == SURFACE_INTERIOR) continue;
-        vec xi = vec_load(p->x, i);
-        pair pr;
-        FOR_EACH_PAIR (k, p->x, nl, i, xi, pr) {
-            if (particle_is_wall_image(p, pr.j))
-                w->body[i].at_wall = 1;
-            else if (p->surface[pr.j] != SURFACE_INTERIOR)
-                unite(w->parent, (int32_t)i, (int32_t)pr.j);
-        }
-    }
-    for (size_t i = 0; i < p->n_fluid; i++) /* a body is at a wall if any of it is */
-        if (w->body[i].at_wall) w->body[find_root(w->parent, (int32_t)i)].at_wall = 1;
-}
-
 /* In the continuum, the surface force on a closed body of liquid has no resultant and no
  * moment; the discrete one leaves small residuals of both, removed here body by body: the
  * resultant in proportion to delta V, the moment as the field delta V (Omega x r) about the
  * body's centre whose moment it is (a rigid rotation's pattern, which adds no resultant). A
  * body whose interface comes within 2h of a wall keeps both: the wall takes the reaction of
- * its contact lines. The bodies are the step's (surface_tension_find_bodies). Serial and in
+ * its contact lines. The bodies are the step's (bodies_find). Serial and in
  * index order, over the interface particles only: the result does not depend on the thread
  * count. */
-static void balance_bodies(particles *p, surface_tension_work *w)
+static void balance_bodies(particles *p, const bodies *bs, surface_tension_work *w)
 {
     size_t n = p->n_fluid;
     for (size_t i = 0; i < n; i++) { /* the sums of the stage start at 0 */
         if (p->interface[i] == 0.0) continue;
-        surface_body *b = &w->body[find_root(w->parent, (int32_t)i)];
-        *b = (surface_body){.at_wall = b->at_wall};
+        int32_t id = bs->id[i];
+        w->body[id] = (surface_body){.at_wall = bs->at_wall[id]};
     }
     for (size_t i = 0; i < n; i++) { /* resultant, weight and centre */
         if (p->interface[i] == 0.0) continue;
-        surface_body *b = &w->body[find_root(w->parent, (int32_t)i)];
+        surface_body *b = &w->body[bs->id[i]];
         double wi = p->interface[i] * p->vol[i];
         b->force = vec_add(b->force, vec_load(p->st_force, i));
         b->weight += wi;
@@ -275,7 +233,7 @@ static void balance_bodies(particles *p, surface_tension_work *w)
     }
     for (size_t i = 0; i < n; i++) { /* the resultant removed; moment and inertia */
         if (p->interface[i] == 0.0) continue;
-        surface_body *b = &w->body[find_root(w->parent, (int32_t)i)];
+        surface_body *b = &w->body[bs->id[i]];
         if (b->at_wall || !(b->weight > 0.0)) continue;
         double wi = p->interface[i] * p->vol[i];
         vec f = vec_axpy(vec_load(p->st_force, i), -wi / b->weight, b->force);
@@ -286,7 +244,7 @@ static void balance_bodies(particles *p, surface_tension_work *w)
     }
     for (size_t i = 0; i < n; i++) { /* the moment removed */
         if (p->interface[i] == 0.0) continue;
-        surface_body *b = &w->body[find_root(w->parent, (int32_t)i)];
+        surface_body *b = &w->body[bs->id[i]];
         if (b->at_wall || !(b->weight > 0.0)) continue;
         vec r = vec_sub(vec_load(p->x, i), vec_scale(b->centre, 1.0 / b->weight));
         double wi = p->interface[i] * p->vol[i];
@@ -296,14 +254,14 @@ static void balance_bodies(particles *p, surface_tension_work *w)
 }
 
 void surface_tension_compute(const surface_tension_params *st, const kernel *k, particles *p,
-                             const neighbour_list *nl, surface_tension_work *w)
+                             const neighbour_list *nl, const bodies *b, surface_tension_work *w)
 {
     interface_and_normals(st, k, p, nl, w);
     mirror_into_ghosts(p, w);
     smoothed_normals(k, p, nl, w->normal, w->smooth);
     surface_curvature(st, k, p, nl, w->smooth, w->kappa);
     band_force(st, k, p, nl, w->smooth, w->kappa, w->band_sum);
-    balance_bodies(p, w);
+    balance_bodies(p, b, w);
 }
 
 double surface_tension_power(const particles *p, double *scratch)

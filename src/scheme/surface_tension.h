@@ -10,6 +10,7 @@
 #include "core/kernel.h"
 #include "core/particles.h"
 #include "core/vec.h"
+#include "scheme/bodies.h"
 
 /* The flat-surface calibration of the interface function, from a lattice half-space. */
 typedef struct {
@@ -36,17 +37,15 @@ typedef struct {
     double *smooth[DIM]; /* its Shepard average over the free surface */
     double *kappa;       /* the curvature of the free-surface particles */
     double *band_sum;    /* sum W V over S_F, self included: what delta V spreads over */
-    int32_t *parent;     /* the bodies: union-find over the fluid */
-    surface_body *body;  /* indexed by each body's root */
+    surface_body *body;  /* indexed by body (bodies.h) */
 } surface_tension_work;
 
-#define surface_tension_setup       DIM_NAME(surface_tension_setup)
-#define surface_tension_compute     DIM_NAME(surface_tension_compute)
-#define surface_tension_reserve     DIM_NAME(surface_tension_reserve)
-#define surface_tension_find_bodies DIM_NAME(surface_tension_find_bodies)
-#define surface_tension_free        DIM_NAME(surface_tension_free)
-#define surface_tension_power       DIM_NAME(surface_tension_power)
-#define surface_tension_energy      DIM_NAME(surface_tension_energy)
+#define surface_tension_setup   DIM_NAME(surface_tension_setup)
+#define surface_tension_compute DIM_NAME(surface_tension_compute)
+#define surface_tension_reserve DIM_NAME(surface_tension_reserve)
+#define surface_tension_free    DIM_NAME(surface_tension_free)
+#define surface_tension_power   DIM_NAME(surface_tension_power)
+#define surface_tension_energy  DIM_NAME(surface_tension_energy)
 
 surface_tension_params surface_tension_setup(const kernel *k, double dr, double sigma,
                                              double lambda_min);
@@ -55,22 +54,15 @@ surface_tension_params surface_tension_setup(const kernel *k, double dr, double 
 int surface_tension_reserve(surface_tension_work *w, size_t n_total);
 void surface_tension_free(surface_tension_work *w);
 
-/* The bodies of liquid of the step: the connected sets of S_F particles (connected when
- * within 2h; each root the smallest index of its set), each flagged when a wall's ghost is
- * within 2h of it. Once per step, before the stages' surface_tension_compute: S_F is the
- * step's, and so are its bodies. */
-void surface_tension_find_bodies(const kernel *k, const particles *p, const neighbour_list *nl,
-                                 surface_tension_work *w);
-
 /* Fills p->interface (delta_Sigma, 1/m, normalised so that it integrates to 1 across a flat
  * lattice surface), p->curvature and p->st_force (the force on each fluid particle, N) from
- * the current positions, with the step's S_F (fields_geometry) and bodies, and mirrors interface
- * and S_F into the ghosts; w holds room for p->n_total particles (surface_tension_reserve). On
- * every body of liquid that touches no wall, the force and its moment sum to zero exactly, as the
- * continuum's do: each such body gets its discrete residuals removed, so that its momentum
- * and angular momentum are conserved. */
+ * the current positions, with the step's S_F (fields_geometry) and bodies (bodies_find), and
+ * mirrors interface and S_F into the ghosts; w holds room for p->n_total particles
+ * (surface_tension_reserve). On every body of liquid that touches no wall, the force and its moment
+ * sum to zero exactly, as the continuum's do: each such body gets its discrete residuals removed,
+ * so that its momentum and angular momentum are conserved. */
 void surface_tension_compute(const surface_tension_params *st, const kernel *k, particles *p,
-                             const neighbour_list *nl, surface_tension_work *w);
+                             const neighbour_list *nl, const bodies *b, surface_tension_work *w);
 
 /* The surface energy sigma sum delta V (J; per unit width in 2D): sigma times the discrete
  * interface area, whose measure delta integrates to 1 across a flat surface. Needs this

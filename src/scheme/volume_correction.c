@@ -8,6 +8,8 @@
 #include "core/pair.h"
 
 #include <math.h>
+#include <stdlib.h>
+#include <string.h>
 
 double volume_correction_lattice_sum(const kernel *k, double dr)
 {
@@ -78,10 +80,68 @@ static void correction_velocity(const physics_params *pp, particles *p, const ne
     }
 }
 
-void volume_correction_apply(const physics_params *pp, particles *p, const neighbour_list *nl)
+static int reserve(volume_correction_work *w, size_t n_bodies)
 {
+    if (n_bodies <= w->capacity) return 0;
+    volume_correction_free(w);
+    w->normal_flux = malloc(n_bodies * sizeof *w->normal_flux);
+    w->band_volume = malloc(n_bodies * sizeof *w->band_volume);
+    if (!w->normal_flux || !w->band_volume) {
+        volume_correction_free(w);
+        return -1;
+    }
+    w->capacity = n_bodies;
+    return 0;
+}
+
+void volume_correction_free(volume_correction_work *w)
+{
+    free(w->normal_flux);
+    free(w->band_volume);
+    memset(w, 0, sizeof *w);
+}
+
+/* Each body's S_F moves along its normal at one speed, the V-weighted mean of dv . n over
+ * it, which keeps the body's rate of change of volume through its surface and drops the
+ * rest. Why: where dv . n varies along a surface at rest, it moves the surface without
+ * moving the liquid, and any such uneven move of a surface in equilibrium (a circle under
+ * surface tension, a level surface under gravity) raises its surface or potential energy
+ * at second order, energy that the restoring force then hands to the flow. The mismatch e
+ * is never smooth at the particle scale, so those moves never cancel: on a drop of water at
+ * rest (docs/surface-tension.md) they fed currents that grew over seconds. Where lambda <
+ * 0.4 there is no reliable normal and no correction (correction_velocity): such particles
+ * take no part. Serial and in index order: the sums do not depend on the thread count. */
+static bool moves_with_its_body(const particles *p, const bodies *b, size_t i)
+{
+    return b->id[i] >= 0 && p->lambda[i] >= SHIFTING_LAMBDA_MIN;
+}
+
+static void surface_moves_per_body(particles *p, const bodies *b, volume_correction_work *w)
+{
+    for (size_t id = 0; id < b->count; id++) w->normal_flux[id] = w->band_volume[id] = 0.0;
+    for (size_t i = 0; i < p->n_fluid; i++) {
+        if (!moves_with_its_body(p, b, i)) continue;
+        vec dv = vec_load(p->correction, i), n = vec_load(p->normal, i);
+        w->normal_flux[b->id[i]] += p->vol[i] * vec_dot(dv, n);
+        w->band_volume[b->id[i]] += p->vol[i];
+    }
+#pragma omp parallel for schedule(static)
+    for (size_t i = 0; i < p->n_fluid; i++) {
+        if (!moves_with_its_body(p, b, i)) continue;
+        vec dv = vec_load(p->correction, i), n = vec_load(p->normal, i);
+        double mean = w->normal_flux[b->id[i]] / w->band_volume[b->id[i]];
+        vec_store(p->correction, i, vec_axpy(dv, mean - vec_dot(dv, n), n));
+    }
+}
+
+int volume_correction_apply(const physics_params *pp, particles *p, const neighbour_list *nl,
+                            const bodies *b, volume_correction_work *w)
+{
+    if (reserve(w, b->count)) return -1;
     interior_mismatch(pp->lattice_kernel_sum, p);
     surface_band_mismatch(&pp->k, p, nl);
     tank_copy_to_ghosts(p, p->volume_mismatch);
     correction_velocity(pp, p, nl);
+    surface_moves_per_body(p, b, w);
+    return 0;
 }

@@ -8,10 +8,20 @@
 #include "core/cells.h"
 #include "core/kernel.h"
 #include "core/particles.h"
+#include "scheme/bodies.h"
 #include "scheme/physics_params.h"
+
+/* The sums of one step per body (bodies.h), kept between steps so that a step rarely
+ * allocates. */
+typedef struct {
+    size_t capacity;     /* bodies */
+    double *normal_flux; /* sum V dv . n over the body's S_F */
+    double *band_volume; /* sum V over it */
+} volume_correction_work;
 
 #define volume_correction_lattice_sum DIM_NAME(volume_correction_lattice_sum)
 #define volume_correction_apply       DIM_NAME(volume_correction_apply)
+#define volume_correction_free        DIM_NAME(volume_correction_free)
 
 /* kappa = dr^n sum_j W(|r_j|) over the points r_j of the lattice of spacing dr (self
  * included): Eq. (11)'s reading of a regular lattice. */
@@ -21,12 +31,16 @@ double volume_correction_lattice_sum(const kernel *k, double dr);
  * and before bounce-back, frozen over the RK stages like the shifting velocity:
  *   e_i  = V_i sum_j W_ij / kappa - 1 off S_F; in S_F the Shepard average of the interior
  *          neighbours' e (0 with none: the free surface itself, drops);
- *   dv_i = -h U_max sum_j (e_j - e_i) grad_i W_ij V_j, Eq. (7)'s scale, no tangential
- *          projection in S_F (the free surface must move for the volume to change), none
- *          where lambda < 0.4, and at most U_max / 2.
+ *   dv_i = -h U_max sum_j (e_j - e_i) grad_i W_ij V_j, Eq. (7)'s scale, none where
+ *          lambda < 0.4, and at most U_max / 2;
+ *   in S_F, the component of dv along the surface's normal is replaced by its V-weighted
+ *          mean over the particle's body (b): the surface must move for the volume to
+ *          change, but the correction changes each body's volume, not its shape.
  * The particles then move with u + du + dv, and their density is resampled along dv
  * (rhs.c, physics/volume_correction.h); masses and velocities are left alone. Writes
- * p->volume_mismatch of the fluid and the ghosts. */
-void volume_correction_apply(const physics_params *pp, particles *p, const neighbour_list *nl);
+ * p->volume_mismatch of the fluid and the ghosts. Returns 0, or -1 when out of memory. */
+int volume_correction_apply(const physics_params *pp, particles *p, const neighbour_list *nl,
+                            const bodies *b, volume_correction_work *w);
+void volume_correction_free(volume_correction_work *w);
 
 #endif
