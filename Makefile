@@ -1,11 +1,12 @@
 # vcsph: a thin wrapper around CMake (design §6).
 BUILD ?= build
 ASAN_BUILD ?= build-asan
+MPI_BUILD ?= build-mpi
 JOBS ?= $(shell nproc)
 CASE ?= cases/default.ini
 RUN_DIR ?= out/default
 
-.PHONY: all deps build run test sanitize bench clean
+.PHONY: all deps build run test sanitize test-mpi bench clean
 
 all: build
 
@@ -35,6 +36,14 @@ sanitize: deps
 	cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DVCSPH_SANITIZE=ON -DVCSPH_WERROR=ON
 	cmake --build $(ASAN_BUILD) -j $(JOBS)
 	ctest --test-dir $(ASAN_BUILD) --output-on-failure -j $(JOBS)
+
+# The MPI layer's tests (docs/mpi.md) in a build of their own with -DVCSPH_MPI=ON; installs
+# Open MPI and parallel HDF5 where missing. Only the MPI targets are built.
+test-mpi:
+	@tools/install-deps --mpi
+	cmake -S . -B $(MPI_BUILD) -DCMAKE_BUILD_TYPE=Release -DVCSPH_MPI=ON $(CMAKE_FLAGS)
+	cmake --build $(MPI_BUILD) -j $(JOBS) --target mpi_tests
+	ctest --test-dir $(MPI_BUILD) -L mpi --output-on-failure
 
 bench: deps
 	@$(MAKE) --no-print-directory build

@@ -4,8 +4,6 @@
 #include <math.h>
 #include <stdlib.h>
 
-#define REDUCE_BLOCK 4096
-
 double reduce_sum(const double *a, size_t n)
 {
     size_t n_blocks = (n + REDUCE_BLOCK - 1) / REDUCE_BLOCK;

@@ -6,8 +6,13 @@
 
 #include <stddef.h>
 
-/* Sum of a[0..n): blocks of fixed size summed in parallel, then the block sums in order. The
- * grouping depends on n only, never on the thread count. */
+/* The size of reduce_sum's blocks. The MPI build's sum (parallel/mpi_reduce.h) forms the same
+ * blocks of the global order across processes. */
+#define REDUCE_BLOCK 4096
+
+/* Sum of a[0..n): blocks of REDUCE_BLOCK summed in parallel, each from 0 in index order, then
+ * the block sums from 0 in order (a single block: its sum). The grouping depends on n only,
+ * never on the thread count. */
 double reduce_sum(const double *a, size_t n);
 /* Largest of a[0..n) (-inf when n = 0); exact in any order. */
 double reduce_max(const double *a, size_t n);
