@@ -31,11 +31,13 @@ test: deps
 	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
 
 # The same tests under AddressSanitizer + UndefinedBehaviorSanitizer, warnings as errors
-# (optimised, so that the integration runs take seconds, not minutes).
+# (optimised, so that the integration runs take seconds, not minutes), less the long physics
+# runs (label `long`, tests/CMakeLists.txt), whose code paths shorter tests take too and which
+# would add some 25 minutes under the sanitizers.
 sanitize: deps
 	cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DVCSPH_SANITIZE=ON -DVCSPH_WERROR=ON
 	cmake --build $(ASAN_BUILD) -j $(JOBS)
-	ctest --test-dir $(ASAN_BUILD) --output-on-failure -j $(JOBS)
+	ctest --test-dir $(ASAN_BUILD) --output-on-failure -j $(JOBS) -LE long
 
 # The MPI layer's tests (docs/mpi.md) in a build of their own with -DVCSPH_MPI=ON; installs
 # Open MPI and parallel HDF5 where missing. Only the MPI targets are built.
