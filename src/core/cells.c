@@ -47,13 +47,12 @@ static inline int cell_coord(const cell_grid *g, int d, double x)
     return c;
 }
 
-/* Cells are numbered strip by strip: the box is cut along x into strips of CELL_STRIP cells,
- * and within a strip row by row (x fastest, then y, then z). The particles, sorted by cell,
- * then have their neighbours within three rows of one strip (nine in 3D), whatever the
- * tank's length: numbered row by row across the whole box, a 2D tank of 1e6 particles put
- * twice the L2 cache between a particle and its neighbours above and below
- * (docs/performance.md). */
-#define CELL_STRIP 16
+int cells_column(const cell_grid *g, double x) { return cell_coord(g, 0, x); }
+
+size_t cells_n_strips(const cell_grid *g)
+{
+    return (size_t)(g->n[0] + CELL_STRIP - 1) / CELL_STRIP;
+}
 
 static inline size_t cell_index(const cell_grid *g, const int c[DIM])
 {

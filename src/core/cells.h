@@ -27,7 +27,18 @@ typedef struct {
     double radius;
 } neighbour_list;
 
+/* Cells are numbered strip by strip: the box is cut along x into strips of CELL_STRIP cells,
+ * and within a strip row by row (x fastest, then y, then z). The particles, sorted by cell,
+ * then have their neighbours within three rows of one strip (nine in 3D), whatever the
+ * tank's length: numbered row by row across the whole box, a 2D tank of 1e6 particles put
+ * twice the L2 cache between a particle and its neighbours above and below
+ * (docs/performance.md). A strip's particles are also one contiguous range of the sorted
+ * order, which is what the MPI build's slabs are made of (docs/mpi.md). */
+#define CELL_STRIP 16
+
 #define cells_setup      DIM_NAME(cells_setup)
+#define cells_column     DIM_NAME(cells_column)
+#define cells_n_strips   DIM_NAME(cells_n_strips)
 #define cells_free       DIM_NAME(cells_free)
 #define cells_bin        DIM_NAME(cells_bin)
 #define cells_sort_order DIM_NAME(cells_sort_order)
@@ -38,6 +49,10 @@ typedef struct {
  * clamped into the border cells (still found, just less efficiently). */
 int cells_setup(cell_grid *g, const double lo[DIM], const double hi[DIM], double cell_size);
 void cells_free(cell_grid *g);
+/* The column of cells (the cell coordinate along x) of position x along x, clamped into the
+ * box as binning clamps it; its strip is the column / CELL_STRIP. */
+int cells_column(const cell_grid *g, double x);
+size_t cells_n_strips(const cell_grid *g);
 /* Bins particles [0, n) by position: a stable counting sort. */
 int cells_bin(cell_grid *g, double *const x[DIM], size_t n);
 /* After cells_bin of n particles: order[k] = the particle that goes to slot k when particles

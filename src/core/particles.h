@@ -104,7 +104,10 @@ typedef struct {
 /* What a particle of the tail [n_fluid, n_total) stands for. A loop that treats walls apart
  * asks this, never the index alone: a halo particle copied from another process (MPI) will sit
  * in the same tail and is fluid. */
-typedef enum { GHOST_WALL_IMAGE = 0 } ghost_kind;
+typedef enum {
+    GHOST_WALL_IMAGE = 0,
+    GHOST_HALO = 1 /* a fluid particle of another MPI process (parallel/slabs.h); map 0 */
+} ghost_kind;
 
 /* The map of ghost g (n_fluid <= g < n_total). */
 static inline const ghost_map *particle_ghost_map(const particles *p, size_t g)

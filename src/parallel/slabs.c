@@ -1,0 +1,222 @@
+/* slabs: migration and halo of the slab decomposition, through the field registry. */
+#include "parallel/slabs.h"
+#include "parallel/decomposition.h"
+
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* A particle's state travels as a record of doubles, one per FIELD_STATE component (the
+ * registry guarantees each fits in a double, core/particles.c). */
+#define STATE_COUNT_SCALAR(type, name, flags, snapshot, comment) +((flags)&FIELD_STATE ? 1 : 0)
+#define STATE_COUNT_VECTOR(type, name, flags, snapshot, comment) +((flags)&FIELD_STATE ? DIM : 0)
+enum { STATE_DOUBLES = 0 PARTICLE_FIELDS(STATE_COUNT_SCALAR, STATE_COUNT_VECTOR) };
+
+static void pack_state(const particles *p, size_t i, double *record)
+{
+    memset(record, 0, STATE_DOUBLES * sizeof *record);
+    double *at = record;
+#define PACK_SCALAR(type, name, flags, snapshot, comment)                                          \
+    if ((flags)&FIELD_STATE) memcpy(at++, &p->name[i], sizeof(type));
+#define PACK_VECTOR(type, name, flags, snapshot, comment)                                          \
+    if ((flags)&FIELD_STATE)                                                                       \
+        for (int d = 0; d < DIM; d++) memcpy(at++, &p->name[d][i], sizeof(type));
+    PARTICLE_FIELDS(PACK_SCALAR, PACK_VECTOR)
+}
+
+static void unpack_state(particles *p, size_t i, const double *record)
+{
+    const double *at = record;
+#define UNPACK_SCALAR(type, name, flags, snapshot, comment)                                        \
+    if ((flags)&FIELD_STATE) memcpy(&p->name[i], at++, sizeof(type));
+#define UNPACK_VECTOR(type, name, flags, snapshot, comment)                                        \
+    if ((flags)&FIELD_STATE)                                                                       \
+        for (int d = 0; d < DIM; d++) memcpy(&p->name[d][i], at++, sizeof(type));
+    PARTICLE_FIELDS(UNPACK_SCALAR, UNPACK_VECTOR)
+}
+
+static size_t strip_of(const cell_grid *g, double x)
+{
+    return (size_t)cells_column(g, x) / CELL_STRIP;
+}
+
+int slabs_balance(slabs *s, const cell_grid *g, const particles *p, MPI_Comm comm)
+{
+    MPI_Comm_size(comm, &s->n_ranks);
+    MPI_Comm_rank(comm, &s->rank);
+    s->n_strips = cells_n_strips(g);
+    uint64_t *mine = calloc(2 * s->n_strips, sizeof *mine), *all = mine + s->n_strips;
+    size_t *count = malloc(s->n_strips * sizeof *count);
+    size_t *first = realloc(s->first_strip, ((size_t)s->n_ranks + 1) * sizeof *first);
+    if (!mine || !count || !first) MPI_Abort(comm, 3); /* a collective follows: do not leave */
+    s->first_strip = first;
+    for (size_t i = 0; i < p->n_fluid; i++) mine[strip_of(g, p->x[0][i])]++;
+    MPI_Allreduce(mine, all, (int)s->n_strips, MPI_UINT64_T, MPI_SUM, comm);
+    for (size_t k = 0; k < s->n_strips; k++) count[k] = (size_t)all[k];
+    int status = decomposition_balance(count, s->n_strips, s->n_ranks, s->first_strip);
+    free(mine);
+    free(count);
+    return status;
+}
+
+int slabs_owner(const slabs *s, const cell_grid *g, double x)
+{
+    size_t strip = strip_of(g, x);
+    int lo = 0, hi = s->n_ranks - 1; /* the last rank whose first strip is <= strip */
+    while (lo < hi) {
+        int mid = (lo + hi + 1) / 2;
+        if (s->first_strip[mid] <= strip)
+            lo = mid;
+        else
+            hi = mid - 1;
+    }
+    return lo;
+}
+
+void slabs_free(slabs *s)
+{
+    free(s->first_strip);
+    memset(s, 0, sizeof *s);
+}
+
+int slabs_migrate(const slabs *s, const cell_grid *g, particles *p, MPI_Comm comm)
+{
+    size_t n = p->n_fluid, ranks = (size_t)s->n_ranks;
+    int *counts = calloc(4 * ranks, sizeof *counts);
+    int *send = counts, *send_at = counts + ranks, *recv = counts + 2 * ranks,
+        *recv_at = counts + 3 * ranks;
+    int *dest = malloc((n ? n : 1) * sizeof *dest);
+    double *out = malloc((n ? n : 1) * STATE_DOUBLES * sizeof *out), *in = NULL;
+    if (!counts || !dest || !out) MPI_Abort(comm, 3); /* a collective follows: do not leave */
+    for (size_t i = 0; i < n; i++) send[dest[i] = slabs_owner(s, g, p->x[0][i])]++;
+    MPI_Alltoall(send, 1, MPI_INT, recv, 1, MPI_INT, comm);
+    size_t n_out = 0, n_in = 0;
+    for (size_t q = 0; q < ranks; q++) {
+        send_at[q] = (int)(n_out * STATE_DOUBLES);
+        recv_at[q] = (int)(n_in * STATE_DOUBLES);
+        n_out += (size_t)send[q];
+        n_in += (size_t)recv[q];
+    }
+    /* records grouped by destination, each group in this process's order */
+    size_t *cursor = calloc(ranks, sizeof *cursor);
+    in = malloc((n_in ? n_in : 1) * STATE_DOUBLES * sizeof *in);
+    if (!cursor || !in || particles_reserve(p, n_in)) MPI_Abort(comm, 3);
+    for (size_t i = 0; i < n; i++)
+        pack_state(p, i, out + (size_t)send_at[dest[i]] + cursor[dest[i]]++ * STATE_DOUBLES);
+    for (size_t q = 0; q < ranks; q++) {
+        send[q] *= STATE_DOUBLES;
+        recv[q] *= STATE_DOUBLES;
+    }
+    MPI_Alltoallv(out, send, send_at, MPI_DOUBLE, in, recv, recv_at, MPI_DOUBLE, comm);
+    for (size_t i = 0; i < n_in; i++) unpack_state(p, i, in + i * STATE_DOUBLES);
+    p->n_fluid = p->n_total = n_in;
+    free(counts);
+    free(dest);
+    free(out);
+    free(in);
+    free(cursor);
+    return 0;
+}
+
+/* The neighbour on each side, MPI_PROC_NULL at the ends of the tank. */
+static int neighbour(const slabs *s, int side)
+{
+    int q = s->rank + (side ? 1 : -1);
+    return q < 0 || q >= s->n_ranks ? MPI_PROC_NULL : q;
+}
+
+/* out[side] (count[side] items) to the neighbour on that side, in[side] from it; both sides
+ * at once. A message sent to the left is tagged 0, one to the right 1, so what comes from
+ * the left neighbour carries 1. */
+static void exchange_sides(void *const out[2], const int n_out[2], void *const in[2],
+                           const int n_in[2], MPI_Datatype type, const slabs *s, MPI_Comm comm)
+{
+    MPI_Request request[4];
+    for (int side = 0; side < 2; side++) {
+        MPI_Irecv(in[side], n_in[side], type, neighbour(s, side), 1 - side, comm, &request[side]);
+        MPI_Isend(out[side], n_out[side], type, neighbour(s, side), side, comm, &request[2 + side]);
+    }
+    MPI_Waitall(4, request, MPI_STATUSES_IGNORE);
+}
+
+/* One value each way per side. */
+static void exchange(unsigned long long *out, unsigned long long *in, int n, MPI_Datatype type,
+                     const slabs *s, MPI_Comm comm)
+{
+    void *o[2] = {&out[0], &out[1]}, *i[2] = {&in[0], &in[1]};
+    int counts[2] = {n, n};
+    exchange_sides(o, counts, i, counts, type, s, comm);
+}
+
+static int plan_add(halo_plan *h, int side, size_t i)
+{
+    if (h->n_send[side] == h->capacity[side]) {
+        size_t capacity = h->capacity[side] ? 2 * h->capacity[side] : 256;
+        size_t *grown = realloc(h->send[side], capacity * sizeof *grown);
+        if (!grown) return -1;
+        h->send[side] = grown;
+        h->capacity[side] = capacity;
+    }
+    h->send[side][h->n_send[side]++] = i;
+    return 0;
+}
+
+int halo_build(halo_plan *h, const slabs *s, const cell_grid *g, particles *p, MPI_Comm comm)
+{
+    int first_column = (int)s->first_strip[s->rank] * CELL_STRIP;
+    int last_column = (int)s->first_strip[s->rank + 1] * CELL_STRIP - 1;
+    if (last_column > g->n[0] - 1) last_column = g->n[0] - 1;
+    h->n_send[0] = h->n_send[1] = 0;
+    int failed = 0;
+    for (size_t i = 0; i < p->n_fluid; i++) {
+        int column = cells_column(g, p->x[0][i]);
+        if (column == first_column && neighbour(s, 0) != MPI_PROC_NULL) failed |= plan_add(h, 0, i);
+        if (column == last_column && neighbour(s, 1) != MPI_PROC_NULL) failed |= plan_add(h, 1, i);
+    }
+    if (failed) MPI_Abort(comm, 3);
+    unsigned long long sent[2] = {h->n_send[0], h->n_send[1]}, got[2] = {0, 0};
+    exchange(sent, got, 1, MPI_UNSIGNED_LONG_LONG, s, comm);
+    h->n_recv[0] = (size_t)got[0];
+    h->n_recv[1] = (size_t)got[1];
+    h->recv_at[0] = p->n_fluid;
+    h->recv_at[1] = p->n_fluid + h->n_recv[0];
+    size_t n_total = p->n_fluid + h->n_recv[0] + h->n_recv[1];
+    if (particles_reserve(p, n_total)) MPI_Abort(comm, 3);
+    for (size_t t = p->n_fluid; t < n_total; t++) {
+        p->ghost_kind[t - p->n_fluid] = GHOST_HALO;
+        p->ghost_map[t - p->n_fluid] = 0;
+        p->ghost_source[t - p->n_fluid] = -1;
+    }
+    p->n_total = n_total;
+    return halo_refresh(h, s, p, comm);
+}
+
+int halo_refresh(const halo_plan *h, const slabs *s, particles *p, MPI_Comm comm)
+{
+    size_t n_out = h->n_send[0] + h->n_send[1], n_in = h->n_recv[0] + h->n_recv[1];
+    double *out = malloc((n_out + 1) * STATE_DOUBLES * sizeof *out);
+    double *in = malloc((n_in + 1) * STATE_DOUBLES * sizeof *in);
+    if (!out || !in) MPI_Abort(comm, 3);
+    double *send_side[2] = {out, out + h->n_send[0] * STATE_DOUBLES};
+    double *recv_side[2] = {in, in + h->n_recv[0] * STATE_DOUBLES};
+    for (int side = 0; side < 2; side++)
+        for (size_t k = 0; k < h->n_send[side]; k++)
+            pack_state(p, h->send[side][k], send_side[side] + k * STATE_DOUBLES);
+    void *o[2] = {send_side[0], send_side[1]}, *i[2] = {recv_side[0], recv_side[1]};
+    int n_o[2] = {(int)(h->n_send[0] * STATE_DOUBLES), (int)(h->n_send[1] * STATE_DOUBLES)};
+    int n_i[2] = {(int)(h->n_recv[0] * STATE_DOUBLES), (int)(h->n_recv[1] * STATE_DOUBLES)};
+    exchange_sides(o, n_o, i, n_i, MPI_DOUBLE, s, comm);
+    for (int side = 0; side < 2; side++)
+        for (size_t k = 0; k < h->n_recv[side]; k++)
+            unpack_state(p, h->recv_at[side] + k, recv_side[side] + k * STATE_DOUBLES);
+    free(out);
+    free(in);
+    return 0;
+}
+
+void halo_free(halo_plan *h)
+{
+    free(h->send[0]);
+    free(h->send[1]);
+    memset(h, 0, sizeof *h);
+}

@@ -1,0 +1,63 @@
+/* slabs: the particles of an MPI run split by slabs of whole strips of cells along x
+ * (docs/mpi.md). Each process holds its own fluid particles in [0, n_fluid), in the global
+ * order restricted to them, and copies of its neighbours' boundary particles (the halo) at the
+ * head of the tail, as ghosts of kind GHOST_HALO. Every function is collective over comm. */
+#ifndef VCSPH_SLABS_H
+#define VCSPH_SLABS_H
+
+#include "core/cells.h"
+#include "core/particles.h"
+
+#include <mpi.h>
+
+typedef struct {
+    int n_ranks, rank;
+    size_t n_strips;
+    size_t
+        *first_strip; /* n_ranks + 1: rank r owns strips first_strip[r] .. first_strip[r+1] - 1 */
+} slabs;
+
+/* The halo of a step: which own particles go to each neighbouring process, and where theirs
+ * sit in this store. Side 0 is the process on the left (rank - 1), side 1 the right. */
+typedef struct {
+    size_t n_send[2], capacity[2];
+    size_t *send[2]; /* indices of own particles, ascending */
+    size_t n_recv[2], recv_at[2];
+} halo_plan;
+
+#define slabs_balance DIM_NAME(slabs_balance)
+#define slabs_owner   DIM_NAME(slabs_owner)
+#define slabs_migrate DIM_NAME(slabs_migrate)
+#define slabs_free    DIM_NAME(slabs_free)
+#define halo_build    DIM_NAME(halo_build)
+#define halo_refresh  DIM_NAME(halo_refresh)
+#define halo_free     DIM_NAME(halo_free)
+
+/* The split of grid g's strips that balances the fluid particles of every process (counted
+ * where they are now; an exact sum over the processes, so every process finds the same split,
+ * decomposition_balance). Returns 0, or -1 when the grid has fewer strips than processes or
+ * out of memory. */
+int slabs_balance(slabs *s, const cell_grid *g, const particles *p, MPI_Comm comm);
+/* The process that owns position x (its column's strip). */
+int slabs_owner(const slabs *s, const cell_grid *g, double x);
+void slabs_free(slabs *s);
+
+/* Sends every fluid particle's state (the registry's FIELD_STATE fields) to the process that
+ * owns its position. The particles arrive from processes 0, 1, ... in turn, each in its order,
+ * so the store holds them in the global order they had: sorting by cell with a stable sort
+ * (cells_bin) then gives the order one process would have. Drops the tail (n_total =
+ * n_fluid). Returns 0, or -1 when out of memory. */
+int slabs_migrate(const slabs *s, const cell_grid *g, particles *p, MPI_Comm comm);
+
+/* After the fluid is sorted by cell: the own particles in the first and last column of cells
+ * of the slab go to the process on that side, and theirs are appended to the tail (left's
+ * first, then right's), as ghosts of kind GHOST_HALO with the identity map 0, their state
+ * copied. A cell is at least the search radius, so every neighbour of an own particle is own
+ * or in the halo. Returns 0, or -1 when out of memory. */
+int halo_build(halo_plan *h, const slabs *s, const cell_grid *g, particles *p, MPI_Comm comm);
+/* Copies the state (FIELD_STATE) of the plan's own particles into the other processes' halos
+ * again, after the state has changed (an RK stage). */
+int halo_refresh(const halo_plan *h, const slabs *s, particles *p, MPI_Comm comm);
+void halo_free(halo_plan *h);
+
+#endif
