@@ -67,9 +67,10 @@ tank tank_box(const double size[DIM], wall_kind wall)
 int tank_make_ghosts(const tank *t, particles *p, double reach)
 {
     p->ghost_maps = t->maps;
-    size_t n_fluid = p->n_fluid, g = n_fluid;
-    /* serial and in fluid order: the ghost list is the same for any thread count */
-    for (size_t i = 0; i < n_fluid; i++) {
+    size_t n_fluid = p->n_fluid, n_sources = particles_images_begin(p), g = n_sources;
+    /* serial and in the sources' order (the fluid, then an MPI run's halo): the ghost list is
+       the same for any thread count, and a cell's images come in the order of one process */
+    for (size_t i = 0; i < n_sources; i++) {
         /* per axis, the walls this particle is near: none, low, high (a thin tank: both) */
         unsigned options[DIM][3];
         int n_options[DIM];
@@ -114,7 +115,7 @@ void tank_refresh_ghosts(const tank *t, particles *p, const tank_frame *frame, d
     size_t n_fluid = p->n_fluid;
     int no_slip = t->wall == WALL_NO_SLIP;
 #pragma omp parallel for schedule(static)
-    for (size_t g = n_fluid; g < p->n_total; g++) {
+    for (size_t g = particles_images_begin(p); g < p->n_total; g++) {
         size_t i = (size_t)p->ghost_source[g - n_fluid];
         const ghost_map *map = particle_ghost_map(p, g);
         vec xi = vec_load(p->x, i), ui = vec_load(p->u, i);
@@ -137,7 +138,7 @@ void tank_mirror_step_fields(particles *p, const tank_frame *frame, double c0)
 {
     size_t n_fluid = p->n_fluid;
 #pragma omp parallel for schedule(static)
-    for (size_t g = n_fluid; g < p->n_total; g++) {
+    for (size_t g = particles_images_begin(p); g < p->n_total; g++) {
         size_t i = (size_t)p->ghost_source[g - n_fluid];
         const ghost_map *map = particle_ghost_map(p, g);
         vec force = frame_body_force(frame, vec_load(p->x, i), vec_load(p->u, i));
@@ -157,7 +158,8 @@ void tank_copy_to_ghosts(const particles *p, double *field)
 {
     size_t n_fluid = p->n_fluid;
 #pragma omp parallel for schedule(static)
-    for (size_t g = n_fluid; g < p->n_total; g++) field[g] = field[p->ghost_source[g - n_fluid]];
+    for (size_t g = particles_images_begin(p); g < p->n_total; g++)
+        field[g] = field[p->ghost_source[g - n_fluid]];
 }
 
 /* v reflected across the plane when it points at it (v . n < 0), as it is otherwise: the

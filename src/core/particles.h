@@ -95,8 +95,18 @@ typedef struct {
 #define PARTICLE_SCALAR_MEMBER(type, name, flags, snapshot, comment) type *name;
 #define PARTICLE_VECTOR_MEMBER(type, name, flags, snapshot, comment) type *name[DIM];
 
+/* One bit per field of the registry, for the sets of fields a pass reads or writes
+ * (scheme/passes.c) and that a halo refresh sends (parallel/slabs.h). */
+enum {
+#define FIELD_BIT_ENUM(type, name, flags, snapshot, comment) FIELD_BIT_##name,
+    PARTICLE_FIELDS(FIELD_BIT_ENUM, FIELD_BIT_ENUM) FIELD_BITS
+};
+#define FIELD_MASK(name) (UINT64_C(1) << FIELD_BIT_##name)
+
+/* The tail [n_fluid, n_total) holds first the n_halo halo particles of an MPI run (none on one
+ * process), then the walls' images of the fluid and halo particles. */
 typedef struct {
-    size_t n_fluid, n_total, capacity;
+    size_t n_fluid, n_halo, n_total, capacity;
     PARTICLE_FIELDS(PARTICLE_SCALAR_MEMBER, PARTICLE_VECTOR_MEMBER)
     const ghost_map *ghost_maps; /* the table of the provider that made the ghosts */
 } particles;
@@ -108,6 +118,10 @@ typedef enum {
     GHOST_WALL_IMAGE = 0,
     GHOST_HALO = 1 /* a fluid particle of another MPI process (parallel/slabs.h); map 0 */
 } ghost_kind;
+
+/* The first wall image of the tail; the fluid particles and the halo before it are the images'
+ * sources. */
+static inline size_t particles_images_begin(const particles *p) { return p->n_fluid + p->n_halo; }
 
 /* The map of ghost g (n_fluid <= g < n_total). */
 static inline const ghost_map *particle_ghost_map(const particles *p, size_t g)

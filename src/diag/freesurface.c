@@ -72,8 +72,8 @@ static inline bool free_surface_neighbour(const particles *p, size_t j)
     return !particle_is_wall_image(p, j) && p->is_free[j];
 }
 
-void freesurface_detect(const kernel *k, double dr, double normal_reference, particles *p,
-                        const neighbour_list *nl)
+void freesurface_test(const kernel *k, double dr, double normal_reference, particles *p,
+                      const neighbour_list *nl)
 {
     double radius = FREESURFACE_SCAN_OVER_DR * dr;
 #pragma omp parallel for schedule(static)
@@ -91,6 +91,10 @@ void freesurface_detect(const kernel *k, double dr, double normal_reference, par
             on_surface = !covered(k, p, nl, i, radius);
         p->is_free[i] = (uint8_t)on_surface;
     }
+}
+
+void freesurface_region(const kernel *k, particles *p, const neighbour_list *nl)
+{
     /* S_F: the free surface and every fluid particle within 2h of it (ghosts add nothing: a
        mirror image is never closer than its source). Below the free surface, a particle of S_F
        takes the normal of the surface nearest to it, that of its nearest free-surface

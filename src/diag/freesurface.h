@@ -38,7 +38,8 @@ static inline vec outward_normal(const mat *l_inv, vec grad_one, double *length)
 }
 
 #define freesurface_flat_sums        DIM_NAME(freesurface_flat_sums)
-#define freesurface_detect           DIM_NAME(freesurface_detect)
+#define freesurface_test             DIM_NAME(freesurface_test)
+#define freesurface_region           DIM_NAME(freesurface_region)
 #define freesurface_reference_normal DIM_NAME(freesurface_reference_normal)
 
 /* The sums L = sum r_ji (x) r_ji F V_j and s = sum grad W V_j of a particle `depth` layers
@@ -49,8 +50,13 @@ void freesurface_flat_sums(const kernel *k, double dr, int depth, mat *l, vec *s
  * surface value of the unnormalised normal. */
 double freesurface_reference_normal(const kernel *k, double dr);
 
-/* Fills p->surface of the fluid: needs lambda, normal and normal_raw of this step. */
-void freesurface_detect(const kernel *k, double dr, double normal_reference, particles *p,
-                        const neighbour_list *nl);
+/* The free surface in two passes, because the second reads the first's result at the
+ * neighbours (an MPI run refreshes its halo between them). freesurface_test fills p->is_free
+ * of the fluid from lambda, normal and normal_raw of this step (Marrone et al. 2010);
+ * freesurface_region then fills p->surface (S_F: the free surface and the fluid within 2h of
+ * it) and gives S_F's other particles the normal of their nearest free-surface neighbour. */
+void freesurface_test(const kernel *k, double dr, double normal_reference, particles *p,
+                      const neighbour_list *nl);
+void freesurface_region(const kernel *k, particles *p, const neighbour_list *nl);
 
 #endif

@@ -42,8 +42,8 @@ static inline double strain_norm(double g[DIM][DIM])
     return sqrt(2.0 * dd);
 }
 
-static void geometry_and_gradients(const physics_params *pp, const tank *t, particles *p,
-                                   const neighbour_list *nl)
+void fields_geometry(const physics_params *pp, const tank *t, particles *p,
+                     const neighbour_list *nl)
 {
     const kernel *k = &pp->k;
 #pragma omp parallel for schedule(static)
@@ -138,13 +138,6 @@ static void diffusion(const physics_params *pp, particles *p, const neighbour_li
         p->diff_rho[i] = sum_rho * diffusion_stability_factor(rate, dt);
         p->diff_m[i] = sum_m;
     }
-}
-
-void fields_geometry(const physics_params *pp, const tank *t, particles *p,
-                     const neighbour_list *nl)
-{
-    geometry_and_gradients(pp, t, p, nl);
-    freesurface_detect(&pp->k, pp->dr, pp->normal_reference, p, nl);
 }
 
 void fields_frozen_terms(const physics_params *pp, particles *p, const neighbour_list *nl,

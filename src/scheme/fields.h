@@ -24,8 +24,8 @@ static inline double fields_compression_gradient(const particles *p, size_t i)
 }
 
 /* The geometry of the step (needs the ghosts refreshed): L, lambda, the normal, sum W,
- * sum W V, the renormalized density and velocity gradients, nu_t, nu_delta (fluid), then the
- * free surface and S_F. */
+ * sum W V, the renormalized density and velocity gradients, nu_t, nu_delta (fluid); the free
+ * surface and S_F follow from these (diag/freesurface.h). */
 void fields_geometry(const physics_params *pp, const tank *t, particles *p,
                      const neighbour_list *nl);
 

@@ -26,7 +26,8 @@ static double time_step(const solver *s)
 static int build_neighbours(solver *s, double dt, const tank_frame *frame)
 {
     particles *p = &s->p;
-    double bound = dt * (fluid_max_speed(&s->p, s->scratch) + dt * s->max_acc);
+    double max_speed = fluid_max_speed(&s->p, s->scratch);
+    double bound = dt * (solver_max(s, &max_speed, 1) + dt * s->max_acc);
     s->skin = 3.0 * bound > 0.05 * s->dv.dr ? 3.0 * bound : 0.05 * s->dv.dr;
     double cutoff = 2.0 * s->dv.h + s->skin;
     double lo[DIM], hi[DIM];
@@ -37,15 +38,22 @@ static int build_neighbours(solver *s, double dt, const tank_frame *frame)
     if (cells_setup(&s->grid, lo, hi, cutoff)) return -1;
     /* fluid sorted by cell: neighbours are close in memory */
     p->n_total = p->n_fluid;
+    p->n_halo = 0;
     if (cells_bin(&s->grid, p->x, p->n_fluid)) return -1;
     cells_sort_order(&s->grid, p->n_fluid, s->order);
     particles_permute_fluid(p, s->order, s->scratch);
+    if (s->domain && s->domain->distribute(s->domain, s)) return -1;
     if (tank_make_ghosts(&s->tank, p, cutoff)) return -1;
     solver_update_eos(s);
     tank_refresh_ghosts(&s->tank, p, frame, s->pp.rho0, s->pp.c0);
     if (cells_bin(&s->grid, p->x, p->n_total)) return -1;
     return neighbours_build(&s->nl, &s->grid, p->x, p->n_fluid, cutoff);
 }
+
+/* The integrated variables as a set of fields (FIELD_MASK). */
+#define INTEGRATED_MASK_SCALAR(name) | FIELD_MASK(name)
+#define INTEGRATED_MASK_VECTOR(name) | FIELD_MASK(name)
+#define INTEGRATED_FIELDS            (0 PARTICLE_INTEGRATED(INTEGRATED_MASK_SCALAR, INTEGRATED_MASK_VECTOR))
 
 /* The integrated variables and their rates, in the same order. */
 static void rk_arrays(solver *s, double **y, double **rate)
@@ -71,7 +79,7 @@ static double input_power(solver *s, const tank_frame *frame)
 #pragma omp parallel for schedule(static)
         for (size_t i = 0; i < p->n_fluid; i++)
             s->scratch[i] = -p->m[i] * vec_dot(a, vec_load(p->u, i));
-        return reduce_sum(s->scratch, p->n_fluid);
+        return solver_sum(s, s->scratch, p->n_fluid);
     }
     vec tilt; /* the frame's gravity less the level one */
     for (int d = 0; d < DIM; d++) tilt.c[d] = frame->gravity[d] - (d == 1 ? -s->cfg->gravity : 0.0);
@@ -85,7 +93,7 @@ static double input_power(solver *s, const tank_frame *frame)
         for (int d = 0; d < DIM; d++) f.c[d] += rotation[d];
         s->scratch[i] = p->m[i] * vec_dot(f, vec_load(p->u, i));
     }
-    return reduce_sum(s->scratch, p->n_fluid);
+    return solver_sum(s, s->scratch, p->n_fluid);
 }
 
 /* The rate at which the particles' moves beyond the flow change the potential energy
@@ -101,7 +109,7 @@ static double moves_power(solver *s)
 #pragma omp parallel for schedule(static)
     for (size_t i = 0; i < p->n_fluid; i++)
         s->scratch[i] = g * (p->m[i] * (k->dx[1][i] - p->u[1][i]) + k->dm[i] * p->x[1][i]);
-    return reduce_sum(s->scratch, p->n_fluid);
+    return solver_sum(s, s->scratch, p->n_fluid);
 }
 
 static double max_acceleration(solver *s)
@@ -109,7 +117,7 @@ static double max_acceleration(solver *s)
     particles *p = &s->p;
 #pragma omp parallel for schedule(static)
     for (size_t i = 0; i < p->n_fluid; i++) s->scratch[i] = vec_norm(vec_load(s->k.du, i));
-    return reduce_max(s->scratch, p->n_fluid);
+    return solver_max(s, s->scratch, p->n_fluid);
 }
 
 static double max_displacement(solver *s)
@@ -124,7 +132,7 @@ static double max_displacement(solver *s)
         }
         s->scratch[i] = sqrt(r2);
     }
-    return reduce_max(s->scratch, p->n_fluid);
+    return solver_max(s, s->scratch, p->n_fluid);
 }
 
 int solver_prepare(solver *s, double t_stop)
@@ -156,6 +164,7 @@ void solver_advance(solver *s, double t_stop)
 #pragma omp parallel for schedule(static)
             for (size_t i = 0; i < n; i++)
                 for (int v = 0; v < RK_VARS; v++) y[v][i] = s->y0[v][i] + c * rate[v][i];
+            if (s->domain) s->domain->refresh_halo(s->domain, p, INTEGRATED_FIELDS);
             solver_update_eos(s);
             tank_refresh_ghosts(&s->tank, p, &frame, s->pp.rho0, s->pp.c0);
             if (s->pp.surface_tension) /* from the stage's positions (surface_tension.h) */

@@ -3,6 +3,7 @@
  * runs them in order and brings the wall ghosts up to date, in this one place, before a pass
  * that reads a field an earlier pass changed. */
 #include "scheme/passes.h"
+#include "diag/freesurface.h"
 #include "diag/volume.h"
 #include "scheme/control.h"
 #include "scheme/fields.h"
@@ -10,13 +11,8 @@
 
 #include <stdint.h>
 
-/* One bit per field of the registry. */
-enum {
-#define FIELD_BIT_ENUM(type, name, flags, snapshot, comment) FIELD_BIT_##name,
-    PARTICLE_FIELDS(FIELD_BIT_ENUM, FIELD_BIT_ENUM) FIELD_BITS
-};
 _Static_assert(FIELD_BITS <= 64, "the field masks are 64 bits");
-#define F(name) (UINT64_C(1) << FIELD_BIT_##name)
+#define F(name) FIELD_MASK(name)
 
 /* The fields a wall ghost takes from its source at every refresh (tank_refresh_ghosts): a pass
  * that changes one of them leaves the ghosts stale until the next refresh. */
@@ -36,6 +32,20 @@ static long geometry(solver *s, const tank_frame *frame)
 {
     (void)frame;
     fields_geometry(&s->pp, &s->tank, &s->p, &s->nl);
+    return 0;
+}
+
+static long free_surface_test(solver *s, const tank_frame *frame)
+{
+    (void)frame;
+    freesurface_test(&s->pp.k, s->pp.dr, s->pp.normal_reference, &s->p, &s->nl);
+    return 0;
+}
+
+static long free_surface_region(solver *s, const tank_frame *frame)
+{
+    (void)frame;
+    freesurface_region(&s->pp.k, &s->p, &s->nl);
     return 0;
 }
 
@@ -118,8 +128,11 @@ static long surface_tension(solver *s, const tank_frame *frame)
 static const step_pass prepare_passes[] = {
     {"geometry", F(x) | F(u) | F(u_wall) | F(rho) | F(vol),
      F(lambda) | F(normal) | F(normal_raw) | F(kernel_sum) | F(gamma) | F(grad_rho) | F(nu_t) |
-         F(nu_delta) | F(surface) | F(is_free),
+         F(nu_delta),
      NULL, geometry},
+    {"free-surface test", F(x) | F(lambda) | F(normal) | F(normal_raw), F(is_free), NULL,
+     free_surface_test},
+    {"S_F", F(x) | F(is_free) | F(normal), F(surface) | F(normal), NULL, free_surface_region},
     {"eta control", F(kernel_sum) | F(surface), 0, has_eta_control, eta_control},
     {"bodies", F(x) | F(surface), 0, needs_bodies, find_bodies},
     {"EdBC (Eq. 9)", F(surface) | F(lambda), F(rho) | F(p) | F(vol), NULL, edbc},
@@ -130,26 +143,47 @@ static const step_pass prepare_passes[] = {
      F(volume_mismatch) | F(correction), corrects, correction},
     {"bounce-back", F(x) | F(u) | F(shift) | F(correction), F(u) | F(shift) | F(correction), NULL,
      bounce_back},
-    {"frozen terms", F(x) | F(u) | F(rho) | F(vol) | F(grad_rho) | F(nu_delta) | F(surface),
+    /* the walls' images take the per-step fields of their sources (tank_mirror_step_fields) */
+    {"frozen terms",
+     F(x) | F(u) | F(rho) | F(vol) | F(grad_rho) | F(nu_delta) | F(nu_t) | F(surface) | F(shift) |
+         F(correction),
      F(diff_rho) | F(diff_m), NULL, frozen_terms},
     {"surface tension", F(x) | F(vol) | F(surface) | F(normal),
      F(interface) | F(curvature) | F(st_force), has_surface_tension, surface_tension},
 };
 
+/* Before a pass that reads what earlier passes wrote: an MPI run's halo first (each process
+ * computes its own particles only), then the walls' images, whose sources include the halo. */
+static void refresh_for(solver *s, const tank_frame *frame, uint64_t reads, uint64_t *halo_stale,
+                        uint64_t *ghost_stale)
+{
+    if (s->domain && (*halo_stale & reads)) {
+        s->domain->refresh_halo(s->domain, &s->p, *halo_stale);
+        *ghost_stale |= *halo_stale & GHOST_STATE;
+        *halo_stale = 0;
+    }
+    if (*ghost_stale & reads) {
+        tank_refresh_ghosts(&s->tank, &s->p, frame, s->pp.rho0, s->pp.c0);
+        *ghost_stale = 0;
+    }
+}
+
 int passes_prepare(solver *s, const tank_frame *frame)
 {
     s->eta_switched = 0;
-    uint64_t stale = 0; /* fields changed since the ghosts were last refreshed */
+    /* fields changed since the halo (every field a pass wrote: the same on every process)
+       and the walls' images (the state a pass changed here) were last refreshed */
+    uint64_t halo_stale = 0, ghost_stale = 0;
     for (size_t k = 0; k < sizeof prepare_passes / sizeof prepare_passes[0]; k++) {
         const step_pass *pass = &prepare_passes[k];
         if (pass->active && !pass->active(s)) continue;
-        if (stale & pass->reads) {
-            tank_refresh_ghosts(&s->tank, &s->p, frame, s->pp.rho0, s->pp.c0);
-            stale = 0;
-        }
+        refresh_for(s, frame, pass->reads, &halo_stale, &ghost_stale);
         long changed = pass->run(s, frame);
         if (changed < 0) return -1;
-        if (changed > 0) stale |= pass->writes & GHOST_STATE;
+        halo_stale |= pass->writes;
+        if (changed > 0) ghost_stale |= pass->writes & GHOST_STATE;
     }
+    /* the RK stages read every field at the neighbours */
+    refresh_for(s, frame, ~UINT64_C(0), &halo_stale, &ghost_stale);
     return 0;
 }

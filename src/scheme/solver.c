@@ -41,23 +41,33 @@ static void physics_setup(solver *s)
     s->st = surface_tension_setup(&pp->k, pp->dr, cfg->surface_tension, pp->lambda_renormalize);
 }
 
-static int alloc_work(solver *s)
+static int grow(void **a, size_t n, size_t size)
 {
-    size_t n = s->p.n_fluid ? s->p.n_fluid : 1;
-    for (int v = 0; v < RK_VARS; v++) {
-        s->y0[v] = malloc(n * sizeof(double));
-        s->sum[v] = malloc(n * sizeof(double));
-        if (!s->y0[v] || !s->sum[v]) return -1;
-    }
-#define ALLOC_RATE_SCALAR(name)                                                                    \
-    if (!(s->k.d##name = malloc(n * sizeof(double)))) return -1;
-#define ALLOC_RATE_VECTOR(name)                                                                    \
+    void *grown = realloc(*a, n * size);
+    if (!grown) return -1;
+    *a = grown;
+    return 0;
+}
+
+int solver_reserve(solver *s, size_t n_fluid)
+{
+    size_t n = n_fluid ? n_fluid : 1;
+    if (n <= s->work_capacity) return 0;
+    for (int v = 0; v < RK_VARS; v++)
+        if (grow((void **)&s->y0[v], n, sizeof(double)) ||
+            grow((void **)&s->sum[v], n, sizeof(double)))
+            return -1;
+#define GROW_RATE_SCALAR(name)                                                                     \
+    if (grow((void **)&s->k.d##name, n, sizeof(double))) return -1;
+#define GROW_RATE_VECTOR(name)                                                                     \
     for (int d = 0; d < DIM; d++)                                                                  \
-        if (!(s->k.d##name[d] = malloc(n * sizeof(double)))) return -1;
-    PARTICLE_INTEGRATED(ALLOC_RATE_SCALAR, ALLOC_RATE_VECTOR)
-    s->scratch = malloc(n * sizeof(double));
-    s->order = malloc(n * sizeof(size_t));
-    return s->scratch && s->order ? 0 : -1;
+        if (grow((void **)&s->k.d##name[d], n, sizeof(double))) return -1;
+    PARTICLE_INTEGRATED(GROW_RATE_SCALAR, GROW_RATE_VECTOR)
+    if (grow((void **)&s->scratch, n, sizeof(double)) ||
+        grow((void **)&s->order, n, sizeof(size_t)))
+        return -1;
+    s->work_capacity = n;
+    return 0;
 }
 
 int solver_init(solver *s, const config *cfg, char *err, size_t err_len)
@@ -74,7 +84,8 @@ int solver_init(solver *s, const config *cfg, char *err, size_t err_len)
     double size[3] = {cfg->tank_length, cfg->tank_height, cfg->tank_width};
     s->tank = tank_box(size, cfg->wall);
     physics_setup(s);
-    if (particles_init(&s->p, 0) || lattice_fill(&s->p, cfg, &s->dv) || alloc_work(s)) {
+    if (particles_init(&s->p, 0) || lattice_fill(&s->p, cfg, &s->dv) ||
+        solver_reserve(s, s->p.n_fluid)) {
         snprintf(err, err_len, "out of memory for %ld particles", s->dv.n_fluid);
         solver_free(s);
         return 2;
@@ -116,8 +127,9 @@ void solver_update_eos(solver *s)
 {
     particles *p = &s->p;
     double rho0 = s->pp.rho0, c0 = s->pp.c0;
+    /* the halo too: the same function of the same state as on its own process */
 #pragma omp parallel for schedule(static)
-    for (size_t i = 0; i < p->n_fluid; i++) {
+    for (size_t i = 0; i < particles_images_begin(p); i++) {
         p->p[i] = eos_pressure(p->rho[i], rho0, c0);
         p->vol[i] = p->m[i] / p->rho[i];
         for (int d = 0; d < DIM; d++) p->u_wall[d][i] = p->u[d][i];

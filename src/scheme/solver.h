@@ -9,6 +9,7 @@
 #include "core/config.h"
 #include "core/derived.h"
 #include "core/particles.h"
+#include "core/reduce.h"
 #include "diag/energy.h"
 #include "scheme/eta_control.h"
 #include "scheme/physics_params.h"
@@ -19,7 +20,26 @@
 /* integrated fluid variables (PARTICLE_INTEGRATED): x[DIM], u[DIM], rho, m */
 #define RK_VARS PARTICLE_N_INTEGRATED
 
-typedef struct {
+/* What the step asks of a run split among processes (the MPI build's parallel/mpi_domain.h,
+ * docs/mpi.md); a solver without one (domain NULL) is the whole liquid on one process, where
+ * each of these is the identity or the local reduction of core/reduce.h. */
+struct solver;
+typedef struct solver_domain {
+    /* After the fluid's sort by cell: hands every particle to the process that owns its
+       position, sorts the own ones by cell again and appends the halo (p->n_halo). Returns 0,
+       or -1 when out of memory. */
+    int (*distribute)(const struct solver_domain *d, struct solver *s);
+    /* Copies the fields of `fields` (a set of FIELD_MASK) of the own particles into the
+       halos of the other processes. */
+    void (*refresh_halo)(const struct solver_domain *d, particles *p, uint64_t fields);
+    /* The sum (as reduce_sum of the whole liquid in its global order) and the largest value
+       of every process's a[0 .. n). */
+    double (*sum)(const struct solver_domain *d, const double *a, size_t n);
+    double (*max)(const struct solver_domain *d, const double *a, size_t n);
+    void *context;
+} solver_domain;
+
+typedef struct solver {
     const config *cfg;
     derived dv;
     motion mo;
@@ -35,6 +55,7 @@ typedef struct {
     rates k;              /* rates of the current stage */
     double *scratch;      /* n_fluid doubles */
     size_t *order;        /* n_fluid sort permutation */
+    size_t work_capacity; /* the fluid particles these arrays hold room for */
 
     double t, dt;   /* time; size of the prepared step */
     double last_dt; /* size of the step that ended at t */
@@ -54,9 +75,21 @@ typedef struct {
     long n_edbc;                    /* particles corrected by EdBC at the last step start */
     int eta_switched;               /* the last solver_prepare switched eta ... */
     char eta_switch_detail[160];    /* ... and how */
+    const solver_domain *domain;    /* the processes' split (MPI), or NULL: one process */
 } solver;
 
+/* The global sum and maximum of a fluid array: over every process with a domain. */
+static inline double solver_sum(const solver *s, const double *a, size_t n)
+{
+    return s->domain ? s->domain->sum(s->domain, a, n) : reduce_sum(a, n);
+}
+static inline double solver_max(const solver *s, const double *a, size_t n)
+{
+    return s->domain ? s->domain->max(s->domain, a, n) : reduce_max(a, n);
+}
+
 #define solver_init        DIM_NAME(solver_init)
+#define solver_reserve     DIM_NAME(solver_reserve)
 #define solver_free        DIM_NAME(solver_free)
 #define solver_step        DIM_NAME(solver_step)
 #define solver_prepare     DIM_NAME(solver_prepare)
@@ -70,6 +103,9 @@ typedef struct {
  * Returns 0, or 2 with a message. */
 int solver_init(solver *s, const config *cfg, char *err, size_t err_len);
 void solver_free(solver *s);
+/* Room in the work arrays for n_fluid fluid particles (an MPI process's share changes from
+ * step to step). Returns 0, or -1 when out of memory. */
+int solver_reserve(solver *s, size_t n_fluid);
 /* Sets up the step from the current state: its size min(Eq. (8), t_stop - t), the fluid
  * sorted by cell, ghosts, neighbour lists, the per-step fields (geometry, free surface,
  * shifting, diffusion, surface tension), which also serve the diagnostics of the state at
@@ -85,7 +121,7 @@ tank_frame solver_frame(const solver *s, double t);
 void solver_diagnostics(solver *s, diagnostics *out);
 /* health_check of the state at s->t within the tank and numerics.density_bound. */
 int solver_health(const solver *s, char *msg, size_t msg_len);
-/* p and V = m/rho of the fluid from rho, m (the linear EOS). */
+/* p and V = m/rho (the linear EOS) and u_wall = u of the fluid and the halo. */
 void solver_update_eos(solver *s);
 
 #endif

@@ -99,7 +99,7 @@ static void interface_and_normals(const surface_tension_params *st, const kernel
 static void mirror_into_ghosts(particles *p, surface_tension_work *w)
 {
 #pragma omp parallel for schedule(static)
-    for (size_t g = p->n_fluid; g < p->n_total; g++) {
+    for (size_t g = particles_images_begin(p); g < p->n_total; g++) {
         size_t i = (size_t)p->ghost_source[g - p->n_fluid];
         p->interface[g] = p->interface[i];
         w->band_sum[g] = w->band_sum[i];
@@ -131,7 +131,7 @@ static void smoothed_normals(const kernel *k, const particles *p, const neighbou
         double norm = vec_norm(sum);
         vec_store(smooth, i, norm > 0.0 ? vec_scale(sum, 1.0 / norm) : sum);
     }
-    for (size_t g = p->n_fluid; g < p->n_total; g++) {
+    for (size_t g = particles_images_begin(p); g < p->n_total; g++) {
         size_t i = (size_t)p->ghost_source[g - p->n_fluid];
         vec_store(smooth, g, ghost_map_vector(particle_ghost_map(p, g), vec_load(smooth, i)));
     }
