@@ -6,31 +6,52 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* A particle's state travels as a record of doubles, one per FIELD_STATE component (the
- * registry guarantees each fits in a double, core/particles.c). */
-#define STATE_COUNT_SCALAR(type, name, flags, snapshot, comment) +((flags)&FIELD_STATE ? 1 : 0)
-#define STATE_COUNT_VECTOR(type, name, flags, snapshot, comment) +((flags)&FIELD_STATE ? DIM : 0)
-enum { STATE_DOUBLES = 0 PARTICLE_FIELDS(STATE_COUNT_SCALAR, STATE_COUNT_VECTOR) };
-
-static void pack_state(const particles *p, size_t i, double *record)
+/* A particle's fields travel as a record of doubles, one per component of each field of the
+ * set (the registry guarantees each fits in a double, core/particles.c). */
+static size_t record_doubles(uint64_t fields)
 {
-    memset(record, 0, STATE_DOUBLES * sizeof *record);
+    size_t n = 0;
+#define COUNT_SCALAR(type, name, flags, snapshot, comment) n += (fields & FIELD_MASK(name)) ? 1 : 0;
+#define COUNT_VECTOR(type, name, flags, snapshot, comment)                                         \
+    n += (fields & FIELD_MASK(name)) ? DIM : 0;
+    PARTICLE_FIELDS(COUNT_SCALAR, COUNT_VECTOR)
+    return n;
+}
+
+/* The persistent state: what a particle that changes process takes with it. */
+static uint64_t state_fields(void)
+{
+    uint64_t fields = 0;
+#define STATE_SCALAR(type, name, flags, snapshot, comment)                                         \
+    if ((flags)&FIELD_STATE) fields |= FIELD_MASK(name);
+    PARTICLE_FIELDS(STATE_SCALAR, STATE_SCALAR)
+    return fields;
+}
+
+static void pack(const particles *p, size_t i, uint64_t fields, double *record)
+{
     double *at = record;
 #define PACK_SCALAR(type, name, flags, snapshot, comment)                                          \
-    if ((flags)&FIELD_STATE) memcpy(at++, &p->name[i], sizeof(type));
+    if (fields & FIELD_MASK(name)) {                                                               \
+        *at = 0.0;                                                                                 \
+        memcpy(at++, &p->name[i], sizeof(type));                                                   \
+    }
 #define PACK_VECTOR(type, name, flags, snapshot, comment)                                          \
-    if ((flags)&FIELD_STATE)                                                                       \
-        for (int d = 0; d < DIM; d++) memcpy(at++, &p->name[d][i], sizeof(type));
+    if (fields & FIELD_MASK(name))                                                                 \
+        for (int d = 0; d < DIM; d++) {                                                            \
+            *at = 0.0;                                                                             \
+            memcpy(at++, &p->name[d][i], sizeof(type));                                            \
+        }
     PARTICLE_FIELDS(PACK_SCALAR, PACK_VECTOR)
 }
 
-static void unpack_state(particles *p, size_t i, const double *record)
+static void unpack(particles *p, size_t i, uint64_t fields, const double *record)
 {
     const double *at = record;
 #define UNPACK_SCALAR(type, name, flags, snapshot, comment)                                        \
-    if ((flags)&FIELD_STATE) memcpy(&p->name[i], at++, sizeof(type));
+    if (fields & FIELD_MASK(name)) memcpy(&p->name[i], at++, sizeof(type));
 #define UNPACK_VECTOR(type, name, flags, snapshot, comment)                                        \
-    if ((flags)&FIELD_STATE)                                                                       \
+    if (fields & FIELD_MASK(name))                                                                 \
         for (int d = 0; d < DIM; d++) memcpy(&p->name[d][i], at++, sizeof(type));
     PARTICLE_FIELDS(UNPACK_SCALAR, UNPACK_VECTOR)
 }
@@ -82,34 +103,37 @@ void slabs_free(slabs *s)
 int slabs_migrate(const slabs *s, const cell_grid *g, particles *p, MPI_Comm comm)
 {
     size_t n = p->n_fluid, ranks = (size_t)s->n_ranks;
+    uint64_t fields = state_fields();
+    size_t width = record_doubles(fields);
     int *counts = calloc(4 * ranks, sizeof *counts);
     int *send = counts, *send_at = counts + ranks, *recv = counts + 2 * ranks,
         *recv_at = counts + 3 * ranks;
     int *dest = malloc((n ? n : 1) * sizeof *dest);
-    double *out = malloc((n ? n : 1) * STATE_DOUBLES * sizeof *out), *in = NULL;
+    double *out = malloc((n ? n : 1) * width * sizeof *out), *in = NULL;
     if (!counts || !dest || !out) MPI_Abort(comm, 3); /* a collective follows: do not leave */
     for (size_t i = 0; i < n; i++) send[dest[i] = slabs_owner(s, g, p->x[0][i])]++;
     MPI_Alltoall(send, 1, MPI_INT, recv, 1, MPI_INT, comm);
     size_t n_out = 0, n_in = 0;
     for (size_t q = 0; q < ranks; q++) {
-        send_at[q] = (int)(n_out * STATE_DOUBLES);
-        recv_at[q] = (int)(n_in * STATE_DOUBLES);
+        send_at[q] = (int)(n_out * width);
+        recv_at[q] = (int)(n_in * width);
         n_out += (size_t)send[q];
         n_in += (size_t)recv[q];
     }
     /* records grouped by destination, each group in this process's order */
     size_t *cursor = calloc(ranks, sizeof *cursor);
-    in = malloc((n_in ? n_in : 1) * STATE_DOUBLES * sizeof *in);
+    in = malloc((n_in ? n_in : 1) * width * sizeof *in);
     if (!cursor || !in || particles_reserve(p, n_in)) MPI_Abort(comm, 3);
     for (size_t i = 0; i < n; i++)
-        pack_state(p, i, out + (size_t)send_at[dest[i]] + cursor[dest[i]]++ * STATE_DOUBLES);
+        pack(p, i, fields, out + (size_t)send_at[dest[i]] + cursor[dest[i]]++ * width);
     for (size_t q = 0; q < ranks; q++) {
-        send[q] *= STATE_DOUBLES;
-        recv[q] *= STATE_DOUBLES;
+        send[q] *= width;
+        recv[q] *= width;
     }
     MPI_Alltoallv(out, send, send_at, MPI_DOUBLE, in, recv, recv_at, MPI_DOUBLE, comm);
-    for (size_t i = 0; i < n_in; i++) unpack_state(p, i, in + i * STATE_DOUBLES);
+    for (size_t i = 0; i < n_in; i++) unpack(p, i, fields, in + i * width);
     p->n_fluid = p->n_total = n_in;
+    p->n_halo = 0;
     free(counts);
     free(dest);
     free(out);
@@ -187,28 +211,30 @@ int halo_build(halo_plan *h, const slabs *s, const cell_grid *g, particles *p, M
         p->ghost_map[t - p->n_fluid] = 0;
         p->ghost_source[t - p->n_fluid] = -1;
     }
+    p->n_halo = n_total - p->n_fluid;
     p->n_total = n_total;
-    return halo_refresh(h, s, p, comm);
+    return halo_refresh(h, s, p, state_fields(), comm);
 }
 
-int halo_refresh(const halo_plan *h, const slabs *s, particles *p, MPI_Comm comm)
+int halo_refresh(const halo_plan *h, const slabs *s, particles *p, uint64_t fields, MPI_Comm comm)
 {
+    size_t width = record_doubles(fields);
     size_t n_out = h->n_send[0] + h->n_send[1], n_in = h->n_recv[0] + h->n_recv[1];
-    double *out = malloc((n_out + 1) * STATE_DOUBLES * sizeof *out);
-    double *in = malloc((n_in + 1) * STATE_DOUBLES * sizeof *in);
+    double *out = malloc((n_out + 1) * width * sizeof *out);
+    double *in = malloc((n_in + 1) * width * sizeof *in);
     if (!out || !in) MPI_Abort(comm, 3);
-    double *send_side[2] = {out, out + h->n_send[0] * STATE_DOUBLES};
-    double *recv_side[2] = {in, in + h->n_recv[0] * STATE_DOUBLES};
+    double *send_side[2] = {out, out + h->n_send[0] * width};
+    double *recv_side[2] = {in, in + h->n_recv[0] * width};
     for (int side = 0; side < 2; side++)
         for (size_t k = 0; k < h->n_send[side]; k++)
-            pack_state(p, h->send[side][k], send_side[side] + k * STATE_DOUBLES);
+            pack(p, h->send[side][k], fields, send_side[side] + k * width);
     void *o[2] = {send_side[0], send_side[1]}, *i[2] = {recv_side[0], recv_side[1]};
-    int n_o[2] = {(int)(h->n_send[0] * STATE_DOUBLES), (int)(h->n_send[1] * STATE_DOUBLES)};
-    int n_i[2] = {(int)(h->n_recv[0] * STATE_DOUBLES), (int)(h->n_recv[1] * STATE_DOUBLES)};
+    int n_o[2] = {(int)(h->n_send[0] * width), (int)(h->n_send[1] * width)};
+    int n_i[2] = {(int)(h->n_recv[0] * width), (int)(h->n_recv[1] * width)};
     exchange_sides(o, n_o, i, n_i, MPI_DOUBLE, s, comm);
     for (int side = 0; side < 2; side++)
         for (size_t k = 0; k < h->n_recv[side]; k++)
-            unpack_state(p, h->recv_at[side] + k, recv_side[side] + k * STATE_DOUBLES);
+            unpack(p, h->recv_at[side] + k, fields, recv_side[side] + k * width);
     free(out);
     free(in);
     return 0;

@@ -55,9 +55,9 @@ int slabs_migrate(const slabs *s, const cell_grid *g, particles *p, MPI_Comm com
  * copied. A cell is at least the search radius, so every neighbour of an own particle is own
  * or in the halo. Returns 0, or -1 when out of memory. */
 int halo_build(halo_plan *h, const slabs *s, const cell_grid *g, particles *p, MPI_Comm comm);
-/* Copies the state (FIELD_STATE) of the plan's own particles into the other processes' halos
- * again, after the state has changed (an RK stage). */
-int halo_refresh(const halo_plan *h, const slabs *s, particles *p, MPI_Comm comm);
+/* Copies the fields of `fields` (a set of FIELD_MASK) of the plan's own particles into the
+ * other processes' halos again, after they have changed (a pass, an RK stage). */
+int halo_refresh(const halo_plan *h, const slabs *s, particles *p, uint64_t fields, MPI_Comm comm);
 void halo_free(halo_plan *h);
 
 #endif

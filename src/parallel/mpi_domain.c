@@ -1,0 +1,63 @@
+/* mpi_domain: slabs, migration and halos behind the solver's domain hooks. */
+#include "parallel/mpi_domain.h"
+#include "parallel/mpi_reduce.h"
+
+#include <string.h>
+
+static mpi_domain *of(const solver_domain *hooks) { return (mpi_domain *)hooks->context; }
+
+/* After the step's sort: the slabs from this state's counts, every particle to its owner in
+ * the global order, sorted by cell again (stably: within a cell the global order, as on one
+ * process, docs/mpi.md), then the halo. */
+static int distribute(const solver_domain *hooks, solver *s)
+{
+    mpi_domain *d = of(hooks);
+    particles *p = &s->p;
+    if (slabs_balance(&d->slabs, &s->grid, p, d->comm)) return -1;
+    if (slabs_migrate(&d->slabs, &s->grid, p, d->comm)) return -1;
+    if (solver_reserve(s, p->n_fluid) || cells_bin(&s->grid, p->x, p->n_fluid)) return -1;
+    cells_sort_order(&s->grid, p->n_fluid, s->order);
+    particles_permute_fluid(p, s->order, s->scratch);
+    return halo_build(&d->halo, &d->slabs, &s->grid, p, d->comm);
+}
+
+static void refresh_halo(const solver_domain *hooks, particles *p, uint64_t fields)
+{
+    mpi_domain *d = of(hooks);
+    halo_refresh(&d->halo, &d->slabs, p, fields, d->comm);
+}
+
+static double sum(const solver_domain *hooks, const double *a, size_t n)
+{
+    return mpi_reduce_sum(a, n, of(hooks)->comm);
+}
+
+static double max(const solver_domain *hooks, const double *a, size_t n)
+{
+    return mpi_reduce_max(a, n, of(hooks)->comm);
+}
+
+void mpi_domain_attach(mpi_domain *d, solver *s, MPI_Comm comm)
+{
+    memset(d, 0, sizeof *d);
+    d->comm = comm;
+    d->hooks = (solver_domain){distribute, refresh_halo, sum, max, d};
+    int rank, ranks;
+    MPI_Comm_rank(comm, &rank);
+    MPI_Comm_size(comm, &ranks);
+    /* a contiguous share of the order: the shares in rank order are the global order */
+    particles *p = &s->p;
+    size_t n = p->n_fluid, first = n * (size_t)rank / (size_t)ranks,
+           end = n * (size_t)(rank + 1) / (size_t)ranks;
+    for (size_t k = 0; k < end - first; k++) s->order[k] = first + k;
+    p->n_fluid = end - first;
+    particles_permute_fluid(p, s->order, s->scratch);
+    p->n_total = p->n_fluid;
+    s->domain = &d->hooks;
+}
+
+void mpi_domain_free(mpi_domain *d)
+{
+    slabs_free(&d->slabs);
+    halo_free(&d->halo);
+}
