@@ -77,7 +77,7 @@ static void test_block_at_rest(void **state)
     }
     assert_int_equal(n_free, p->n_fluid / (size_t)cfg.resolution);
     volume_errors ve;
-    volume_compute(p, s.dv.v0 / (double)p->n_fluid, s.scratch, &ve);
+    volume_compute(p, s.dv.v0 / (double)p->n_fluid, s.scratch, NULL, &ve);
     double share = (double)outside / (double)p->n_fluid;
     printf("%dD block: eps_V1 %.4e (expected %.4e), eps_V2 %.4e (%.4e), eps_V3 %.4e (%.4e), "
            "share outside S_F %.3f\n",

@@ -67,7 +67,9 @@ static double mechanical_energy(const diagnostics *dg) { return dg->ekin + dg->e
 /* sigma x the interface area (sum delta V), 0 without surface tension */
 static double surface_energy(solver *s)
 {
-    return s->pp.surface_tension ? surface_tension_energy(&s->st, &s->p, s->scratch) : 0.0;
+    return s->pp.surface_tension
+               ? surface_tension_energy(&s->st, &s->p, s->scratch, solver_reducer(s))
+               : 0.0;
 }
 
 /* ediss = work_in + work_st + work_moves - (E(t) - E(0)): the mechanical energy theorem of
@@ -111,7 +113,7 @@ void run_write_loads_row(run *r)
     solver *s = &r->s;
     tank_loads l;
     tank_frame frame = solver_frame(s, s->t);
-    if (loads_compute(&s->pp, &s->p, &s->nl, &frame, &l)) {
+    if (loads_compute(&s->pp, &s->p, &s->nl, &frame, solver_reducer(s), &l)) {
         log_error("vcsph: loads: out of memory; loads.csv misses t = %.9g s", s->t);
         return;
     }
@@ -137,7 +139,7 @@ void run_write_series_row(run *r, int with_geometry)
 {
     solver *s = &r->s;
     volume_errors ve;
-    if (with_geometry) volume_compute(&s->p, s->dv.cell_volume, s->scratch, &ve);
+    if (with_geometry) volume_compute(&s->p, s->dv.cell_volume, s->scratch, solver_reducer(s), &ve);
     diagnostics dg;
     solver_diagnostics(s, &dg);
     double esurf = surface_energy(s), energy = mechanical_energy(&dg);
@@ -187,7 +189,8 @@ void run_write_series_row(run *r, int with_geometry)
     csv_put(c, s->work_st);
     if (with_geometry) {
         volume_rates rate;
-        volume_rate(&s->pp.k, &s->p, &s->nl, s->dv.cell_volume, s->scratch, &rate);
+        volume_rate(&s->pp.k, &s->p, &s->nl, s->dv.cell_volume, s->scratch, solver_reducer(s),
+                    &rate);
         csv_put(c, rate.u);
         csv_put(c, rate.shift);
         csv_put(c, rate.correction);

@@ -39,7 +39,7 @@ int snapshot_volume_dim(const config *cfg, const char *path, const snapshot_info
             status = RUN_FAILED;
         } else {
             volume_errors ve;
-            volume_compute(p, s.dv.cell_volume, s.scratch, &ve);
+            volume_compute(p, s.dv.cell_volume, s.scratch, NULL, &ve);
             *eps_v1 = ve.eps_v1;
             if (volume_graphical(p, s.tank.size, &s.dv, &volume, err, err_len))
                 status = RUN_FAILED;

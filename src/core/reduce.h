@@ -23,4 +23,33 @@ double reduce_min(const double *a, size_t n);
  * process's own work (bounced particles, the longest neighbour row) stay local. */
 long reduce_total(long local);
 
+/* The reductions over a liquid split among processes (the MPI build's parallel/mpi_domain.h):
+ * each function gets this process's part and returns the global result, the sum equal to
+ * reduce_sum of the whole liquid in its global order. NULL is the whole liquid on one
+ * process: the functions above. */
+typedef struct reducer {
+    double (*sum)(const struct reducer *r, const double *a, size_t n);
+    double (*max)(const struct reducer *r, const double *a, size_t n);
+    double (*min)(const struct reducer *r, const double *a, size_t n);
+    long (*total)(const struct reducer *r, long local);
+    void *context;
+} reducer;
+
+static inline double reducer_sum(const reducer *r, const double *a, size_t n)
+{
+    return r ? r->sum(r, a, n) : reduce_sum(a, n);
+}
+static inline double reducer_max(const reducer *r, const double *a, size_t n)
+{
+    return r ? r->max(r, a, n) : reduce_max(a, n);
+}
+static inline double reducer_min(const reducer *r, const double *a, size_t n)
+{
+    return r ? r->min(r, a, n) : reduce_min(a, n);
+}
+static inline long reducer_total(const reducer *r, long local)
+{
+    return r ? r->total(r, local) : reduce_total(local);
+}
+
 #endif

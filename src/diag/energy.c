@@ -43,12 +43,12 @@ static inline double term_value(const particles *p, const energy_params *ep, ter
 }
 
 /* The terms go to scratch, then one sum in the fixed order of the reduce module. */
-static double sum_term(const particles *p, const energy_params *ep, double *scratch, term t,
-                       int axis, const double centre[3])
+static double sum_term(const particles *p, const energy_params *ep, double *scratch,
+                       const reducer *r, term t, int axis, const double centre[3])
 {
 #pragma omp parallel for schedule(static)
     for (size_t i = 0; i < p->n_fluid; i++) scratch[i] = term_value(p, ep, t, axis, centre, i);
-    return reduce_sum(scratch, p->n_fluid);
+    return reducer_sum(r, scratch, p->n_fluid);
 }
 
 double fluid_max_speed(const particles *p, double *scratch)
@@ -59,23 +59,24 @@ double fluid_max_speed(const particles *p, double *scratch)
 }
 
 void diagnostics_compute(const particles *p, const energy_params *ep, double *scratch,
-                         diagnostics *out)
+                         const reducer *r, diagnostics *out)
 {
     size_t n = p->n_fluid;
-    out->ekin = sum_term(p, ep, scratch, TERM_EKIN, 0, NULL);
-    out->epot = sum_term(p, ep, scratch, TERM_EPOT, 0, NULL);
-    out->eint = sum_term(p, ep, scratch, TERM_EINT, 0, NULL);
-    out->mass = sum_term(p, ep, scratch, TERM_MASS, 0, NULL);
-    out->vol_sph = sum_term(p, ep, scratch, TERM_VOLUME, 0, NULL);
+    out->ekin = sum_term(p, ep, scratch, r, TERM_EKIN, 0, NULL);
+    out->epot = sum_term(p, ep, scratch, r, TERM_EPOT, 0, NULL);
+    out->eint = sum_term(p, ep, scratch, r, TERM_EINT, 0, NULL);
+    out->mass = sum_term(p, ep, scratch, r, TERM_MASS, 0, NULL);
+    out->vol_sph = sum_term(p, ep, scratch, r, TERM_VOLUME, 0, NULL);
     for (int d = 0; d < 3; d++)
-        out->com[d] = d < DIM ? sum_term(p, ep, scratch, TERM_MOMENT, d, NULL) / out->mass : 0.0;
+        out->com[d] = d < DIM ? sum_term(p, ep, scratch, r, TERM_MOMENT, d, NULL) / out->mass : 0.0;
     for (int a = 0; a < 3; a++) /* 2D: about z alone */
         out->angmom[a] =
-            DIM == 3 || a == 2 ? sum_term(p, ep, scratch, TERM_ANGULAR, a, out->com) : 0.0;
-    out->xmin = reduce_min(p->x[0], n);
-    out->xmax = reduce_max(p->x[0], n);
-    out->ymax = reduce_max(p->x[1], n);
-    out->rho_min = reduce_min(p->rho, n);
-    out->rho_max = reduce_max(p->rho, n);
-    out->umax = fluid_max_speed(p, scratch);
+            DIM == 3 || a == 2 ? sum_term(p, ep, scratch, r, TERM_ANGULAR, a, out->com) : 0.0;
+    out->xmin = reducer_min(r, p->x[0], n);
+    out->xmax = reducer_max(r, p->x[0], n);
+    out->ymax = reducer_max(r, p->x[1], n);
+    out->rho_min = reducer_min(r, p->rho, n);
+    out->rho_max = reducer_max(r, p->rho, n);
+    double umax = fluid_max_speed(p, scratch);
+    out->umax = reducer_max(r, &umax, 1);
 }

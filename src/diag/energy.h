@@ -4,6 +4,7 @@
 #define VCSPH_ENERGY_H
 
 #include "core/particles.h"
+#include "core/reduce.h"
 
 typedef struct {
     double ekin, epot, eint; /* J (per unit width in 2D) */
@@ -23,10 +24,11 @@ typedef struct {
 #define diagnostics_compute DIM_NAME(diagnostics_compute)
 #define fluid_max_speed     DIM_NAME(fluid_max_speed)
 
-/* Every sum in a fixed order (reduce module); scratch holds n_fluid doubles. */
+/* Every sum in a fixed order (reduce module), over the processes through r (NULL: one
+ * process); scratch holds n_fluid doubles. */
 void diagnostics_compute(const particles *p, const energy_params *ep, double *scratch,
-                         diagnostics *out);
-/* Largest |u| of the fluid (through scratch, n_fluid doubles). */
+                         const reducer *r, diagnostics *out);
+/* Largest |u| of this process's fluid (through scratch, n_fluid doubles). */
 double fluid_max_speed(const particles *p, double *scratch);
 
 #endif

@@ -19,23 +19,25 @@ static inline double share(const particles *p, measure m, size_t i, double cell_
     return 1.0;
 }
 
-static double mean_share(const particles *p, measure m, double cell_volume, double *scratch)
+static double mean_share(const particles *p, measure m, double cell_volume, double *scratch,
+                         const reducer *r)
 {
 #pragma omp parallel for schedule(static)
     for (size_t i = 0; i < p->n_fluid; i++) scratch[i] = share(p, m, i, cell_volume);
-    return reduce_sum(scratch, p->n_fluid) / (double)p->n_fluid;
+    return reducer_sum(r, scratch, p->n_fluid) / (double)reducer_total(r, (long)p->n_fluid);
 }
 
-void volume_compute(const particles *p, double cell_volume, double *scratch, volume_errors *out)
+void volume_compute(const particles *p, double cell_volume, double *scratch, const reducer *r,
+                    volume_errors *out)
 {
     /* Eq. (12): sum Vgeo / (N dr^n) - 1 */
-    out->eps_v1 = mean_share(p, MEASURE_KERNEL, cell_volume, scratch) - 1.0;
-    out->eps_v2 = 1.0 - mean_share(p, MEASURE_GAMMA, cell_volume, scratch);
-    out->eps_v3 = 1.0 - mean_share(p, MEASURE_LAMBDA, cell_volume, scratch);
+    out->eps_v1 = mean_share(p, MEASURE_KERNEL, cell_volume, scratch, r) - 1.0;
+    out->eps_v2 = 1.0 - mean_share(p, MEASURE_GAMMA, cell_volume, scratch, r);
+    out->eps_v3 = 1.0 - mean_share(p, MEASURE_LAMBDA, cell_volume, scratch, r);
     long n = 0;
 #pragma omp parallel for schedule(static) reduction(+ : n)
     for (size_t i = 0; i < p->n_fluid; i++) n += p->surface[i] == SURFACE_FREE;
-    out->n_free_surface = reduce_total(n);
+    out->n_free_surface = reducer_total(r, n);
 }
 
 /* Eq. (13) of particle i with the velocity field v: Vgeo_i^2 sum_j v_ji . grad_i W_ij */
@@ -53,22 +55,22 @@ static double geometric_volume_rate(const kernel *k, const particles *p, const n
 }
 
 static double interior_rate(const kernel *k, const particles *p, const neighbour_list *nl,
-                            double *const v[DIM], double v0, double *scratch)
+                            double *const v[DIM], double v0, double *scratch, const reducer *r)
 {
 #pragma omp parallel for schedule(static)
     for (size_t i = 0; i < p->n_fluid; i++)
         scratch[i] =
             p->surface[i] == SURFACE_INTERIOR ? geometric_volume_rate(k, p, nl, v, i) : 0.0;
-    return reduce_sum(scratch, p->n_fluid) / v0;
+    return reducer_sum(r, scratch, p->n_fluid) / v0;
 }
 
 void volume_rate(const kernel *k, const particles *p, const neighbour_list *nl, double cell_volume,
-                 double *scratch, volume_rates *out)
+                 double *scratch, const reducer *r, volume_rates *out)
 {
-    double v0 = (double)p->n_fluid * cell_volume;
-    out->u = interior_rate(k, p, nl, p->u, v0, scratch);
-    out->shift = interior_rate(k, p, nl, p->shift, v0, scratch);
-    out->correction = interior_rate(k, p, nl, p->correction, v0, scratch);
+    double v0 = (double)reducer_total(r, (long)p->n_fluid) * cell_volume;
+    out->u = interior_rate(k, p, nl, p->u, v0, scratch, r);
+    out->shift = interior_rate(k, p, nl, p->shift, v0, scratch, r);
+    out->correction = interior_rate(k, p, nl, p->correction, v0, scratch, r);
 }
 
 int volume_graphical(const particles *p, const double size[DIM], const derived *dv, double *volume,

@@ -7,6 +7,7 @@
 #include "core/derived.h"
 #include "core/kernel.h"
 #include "core/particles.h"
+#include "core/reduce.h"
 #include "diag/freesurface.h"
 
 typedef struct {
@@ -17,8 +18,10 @@ typedef struct {
 #define volume_compute DIM_NAME(volume_compute)
 
 /* From this step's geometry (kernel_sum, gamma, lambda, surface); `cell_volume` is dr^n and
- * V0 = n_fluid dr^n. `scratch` holds n_fluid doubles. Sums in the fixed order of reduce. */
-void volume_compute(const particles *p, double cell_volume, double *scratch, volume_errors *out);
+ * V0 = N dr^n. `scratch` holds n_fluid doubles. Sums in the fixed order of reduce, over the
+ * processes through r (NULL: this process's particles are the liquid). */
+void volume_compute(const particles *p, double cell_volume, double *scratch, const reducer *r,
+                    volume_errors *out);
 
 #define volume_rate DIM_NAME(volume_rate)
 
@@ -32,7 +35,7 @@ typedef struct {
     double u, shift, correction;
 } volume_rates;
 void volume_rate(const kernel *k, const particles *p, const neighbour_list *nl, double cell_volume,
-                 double *scratch, volume_rates *out);
+                 double *scratch, const reducer *r, volume_rates *out);
 
 #define volume_graphical DIM_NAME(volume_graphical)
 

@@ -27,21 +27,30 @@ static void refresh_halo(const solver_domain *hooks, particles *p, uint64_t fiel
     halo_refresh(&d->halo, &d->slabs, p, fields, d->comm);
 }
 
-static double sum(const solver_domain *hooks, const double *a, size_t n)
+static MPI_Comm comm_of(const reducer *r) { return ((mpi_domain *)r->context)->comm; }
+
+static double sum(const reducer *r, const double *a, size_t n)
 {
-    return mpi_reduce_sum(a, n, of(hooks)->comm);
+    return mpi_reduce_sum(a, n, comm_of(r));
 }
 
-static double max(const solver_domain *hooks, const double *a, size_t n)
+static double max(const reducer *r, const double *a, size_t n)
 {
-    return mpi_reduce_max(a, n, of(hooks)->comm);
+    return mpi_reduce_max(a, n, comm_of(r));
 }
+
+static double min(const reducer *r, const double *a, size_t n)
+{
+    return mpi_reduce_min(a, n, comm_of(r));
+}
+
+static long total(const reducer *r, long local) { return mpi_reduce_total(local, comm_of(r)); }
 
 void mpi_domain_attach(mpi_domain *d, solver *s, MPI_Comm comm)
 {
     memset(d, 0, sizeof *d);
     d->comm = comm;
-    d->hooks = (solver_domain){distribute, refresh_halo, sum, max, d};
+    d->hooks = (solver_domain){distribute, refresh_halo, {sum, max, min, total, d}, d};
     int rank, ranks;
     MPI_Comm_rank(comm, &rank);
     MPI_Comm_size(comm, &ranks);

@@ -25,5 +25,5 @@ void control_edbc(solver *s)
         p->vol[i] = p->m[i] / rho0;
         n++;
     }
-    s->n_edbc = reduce_total(n);
+    s->n_edbc = reducer_total(solver_reducer(s), n);
 }

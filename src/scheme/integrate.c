@@ -173,7 +173,8 @@ void solver_advance(solver *s, double t_stop)
         rhs_compute(&s->pp, p, &s->nl, &frame, s->eta_control.eta, &s->k);
         if (stage == 0) s->max_acc = max_acceleration(s);
         work += stage_w[stage] * input_power(s, &frame);
-        if (s->pp.surface_tension) work_st += stage_w[stage] * surface_tension_power(p, s->scratch);
+        if (s->pp.surface_tension)
+            work_st += stage_w[stage] * surface_tension_power(p, s->scratch, solver_reducer(s));
         if (moves) work_moves += stage_w[stage] * moves_power(s);
         double w = stage_w[stage];
 #pragma omp parallel for schedule(static)

@@ -22,7 +22,7 @@ static inline vec wall_force_density(const physics_params *pp, const particles *
 enum { COLUMNS = 12 }; /* force, moment, momentum, body force: 3 each, per particle */
 
 int loads_compute(const physics_params *pp, const particles *p, const neighbour_list *nl,
-                  const tank_frame *frame, tank_loads *out)
+                  const tank_frame *frame, const reducer *r, tank_loads *out)
 {
     size_t n = p->n_fluid;
     double *column = malloc(COLUMNS * (n ? n : 1) * sizeof *column);
@@ -44,7 +44,7 @@ int loads_compute(const physics_params *pp, const particles *p, const neighbour_
         for (int c = 0; c < COLUMNS; c++) column[c * n + i] = row[c];
     }
     double sum[COLUMNS];
-    for (int c = 0; c < COLUMNS; c++) sum[c] = reduce_sum(column + c * n, n);
+    for (int c = 0; c < COLUMNS; c++) sum[c] = reducer_sum(r, column + c * n, n);
     free(column);
     for (int d = 0; d < 3; d++) {
         out->force[d] = sum[d];

@@ -7,6 +7,7 @@
 
 #include "core/cells.h"
 #include "core/particles.h"
+#include "core/reduce.h"
 #include "boundary/frame.h"
 #include "scheme/physics_params.h"
 
@@ -23,8 +24,9 @@ typedef struct {
  * its wall images j, summed in a fixed order, and minus its moment (x_i - center) x F_i
  * (center: the frame's); and the liquid's momentum and body force, so that the balance
  * force = body - d(momentum)/dt can be checked. Needs the state of an RK stage (neighbours,
- * ghosts, pressures). Returns 0, or -1 when out of memory. */
+ * ghosts, pressures); r sums over the processes (NULL: one). Returns 0, or -1 when out of memory.
+ */
 int loads_compute(const physics_params *pp, const particles *p, const neighbour_list *nl,
-                  const tank_frame *frame, tank_loads *out);
+                  const tank_frame *frame, const reducer *r, tank_loads *out);
 
 #endif

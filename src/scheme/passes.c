@@ -56,7 +56,7 @@ static long eta_control(solver *s, const tank_frame *frame)
 {
     (void)frame;
     volume_errors ve;
-    volume_compute(&s->p, s->dv.cell_volume, s->scratch, &ve);
+    volume_compute(&s->p, s->dv.cell_volume, s->scratch, solver_reducer(s), &ve);
     s->eta_switched = eta_control_update(&s->eta_control, s->t, ve.eps_v1, s->eta_switch_detail,
                                          sizeof s->eta_switch_detail);
     return 0;

@@ -139,7 +139,7 @@ void solver_update_eos(solver *s)
 void solver_diagnostics(solver *s, diagnostics *out)
 {
     energy_params ep = {s->cfg->gravity, s->pp.rho0, s->pp.c0};
-    diagnostics_compute(&s->p, &ep, s->scratch, out);
+    diagnostics_compute(&s->p, &ep, s->scratch, solver_reducer(s), out);
 }
 
 int solver_health(const solver *s, char *msg, size_t msg_len)

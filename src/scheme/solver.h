@@ -32,10 +32,8 @@ typedef struct solver_domain {
     /* Copies the fields of `fields` (a set of FIELD_MASK) of the own particles into the
        halos of the other processes. */
     void (*refresh_halo)(const struct solver_domain *d, particles *p, uint64_t fields);
-    /* The sum (as reduce_sum of the whole liquid in its global order) and the largest value
-       of every process's a[0 .. n). */
-    double (*sum)(const struct solver_domain *d, const double *a, size_t n);
-    double (*max)(const struct solver_domain *d, const double *a, size_t n);
+    /* The global reductions (core/reduce.h). */
+    reducer reduce;
     void *context;
 } solver_domain;
 
@@ -78,14 +76,18 @@ typedef struct solver {
     const solver_domain *domain;    /* the processes' split (MPI), or NULL: one process */
 } solver;
 
-/* The global sum and maximum of a fluid array: over every process with a domain. */
+/* The global reductions of the run: over every process with a domain, NULL without. */
+static inline const reducer *solver_reducer(const solver *s)
+{
+    return s->domain ? &s->domain->reduce : NULL;
+}
 static inline double solver_sum(const solver *s, const double *a, size_t n)
 {
-    return s->domain ? s->domain->sum(s->domain, a, n) : reduce_sum(a, n);
+    return reducer_sum(solver_reducer(s), a, n);
 }
 static inline double solver_max(const solver *s, const double *a, size_t n)
 {
-    return s->domain ? s->domain->max(s->domain, a, n) : reduce_max(a, n);
+    return reducer_max(solver_reducer(s), a, n);
 }
 
 #define solver_init        DIM_NAME(solver_init)

@@ -264,17 +264,18 @@ void surface_tension_compute(const surface_tension_params *st, const kernel *k, 
     balance_bodies(p, b, w);
 }
 
-double surface_tension_power(const particles *p, double *scratch)
+double surface_tension_power(const particles *p, double *scratch, const reducer *r)
 {
 #pragma omp parallel for schedule(static)
     for (size_t i = 0; i < p->n_fluid; i++)
         scratch[i] = vec_dot(vec_load(p->st_force, i), vec_load(p->u, i));
-    return reduce_sum(scratch, p->n_fluid);
+    return reducer_sum(r, scratch, p->n_fluid);
 }
 
-double surface_tension_energy(const surface_tension_params *st, const particles *p, double *scratch)
+double surface_tension_energy(const surface_tension_params *st, const particles *p, double *scratch,
+                              const reducer *r)
 {
 #pragma omp parallel for schedule(static)
     for (size_t i = 0; i < p->n_fluid; i++) scratch[i] = p->interface[i] * p->vol[i];
-    return st->sigma * reduce_sum(scratch, p->n_fluid);
+    return st->sigma * reducer_sum(r, scratch, p->n_fluid);
 }

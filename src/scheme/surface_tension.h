@@ -9,6 +9,7 @@
 #include "core/cells.h"
 #include "core/kernel.h"
 #include "core/particles.h"
+#include "core/reduce.h"
 #include "core/vec.h"
 #include "scheme/bodies.h"
 
@@ -67,10 +68,11 @@ void surface_tension_compute(const surface_tension_params *st, const kernel *k, 
 /* The surface energy sigma sum delta V (J; per unit width in 2D): sigma times the discrete
  * interface area, whose measure delta integrates to 1 across a flat surface. Needs this
  * step's surface_tension_compute. */
-double surface_tension_energy(const surface_tension_params *st, const particles *p,
-                              double *scratch);
+double surface_tension_energy(const surface_tension_params *st, const particles *p, double *scratch,
+                              const reducer *r);
 
-/* The power of the force on the fluid, sum F^st . u (W), in a fixed order. */
-double surface_tension_power(const particles *p, double *scratch);
+/* The power of the force on the fluid, sum F^st . u (W), in a fixed order (r: over the
+ * processes, as the energy's). */
+double surface_tension_power(const particles *p, double *scratch, const reducer *r);
 
 #endif
