@@ -100,7 +100,7 @@ void slabs_free(slabs *s)
     memset(s, 0, sizeof *s);
 }
 
-int slabs_migrate(const slabs *s, const cell_grid *g, particles *p, MPI_Comm comm)
+int slabs_migrate(slabs *s, const cell_grid *g, particles *p, MPI_Comm comm)
 {
     size_t n = p->n_fluid, ranks = (size_t)s->n_ranks;
     uint64_t fields = state_fields();
@@ -131,6 +131,9 @@ int slabs_migrate(const slabs *s, const cell_grid *g, particles *p, MPI_Comm com
         recv[q] *= width;
     }
     MPI_Alltoallv(out, send, send_at, MPI_DOUBLE, in, recv, recv_at, MPI_DOUBLE, comm);
+    size_t kept = (size_t)send[s->rank] / width;
+    s->sent_records += n - kept;
+    s->sent_bytes += (n - kept) * width * sizeof(double);
     for (size_t i = 0; i < n_in; i++) unpack(p, i, fields, in + i * width);
     p->n_fluid = p->n_total = n_in;
     p->n_halo = 0;
@@ -185,7 +188,7 @@ static int plan_add(halo_plan *h, int side, size_t i)
     return 0;
 }
 
-int halo_build(halo_plan *h, const slabs *s, const cell_grid *g, particles *p, MPI_Comm comm)
+int halo_build(halo_plan *h, slabs *s, const cell_grid *g, particles *p, MPI_Comm comm)
 {
     int first_column = (int)s->first_strip[s->rank] * CELL_STRIP;
     int last_column = (int)s->first_strip[s->rank + 1] * CELL_STRIP - 1;
@@ -216,7 +219,7 @@ int halo_build(halo_plan *h, const slabs *s, const cell_grid *g, particles *p, M
     return halo_refresh(h, s, p, state_fields(), comm);
 }
 
-int halo_refresh(const halo_plan *h, const slabs *s, particles *p, uint64_t fields, MPI_Comm comm)
+int halo_refresh(const halo_plan *h, slabs *s, particles *p, uint64_t fields, MPI_Comm comm)
 {
     size_t width = record_doubles(fields);
     size_t n_out = h->n_send[0] + h->n_send[1], n_in = h->n_recv[0] + h->n_recv[1];
@@ -232,6 +235,8 @@ int halo_refresh(const halo_plan *h, const slabs *s, particles *p, uint64_t fiel
     int n_o[2] = {(int)(h->n_send[0] * width), (int)(h->n_send[1] * width)};
     int n_i[2] = {(int)(h->n_recv[0] * width), (int)(h->n_recv[1] * width)};
     exchange_sides(o, n_o, i, n_i, MPI_DOUBLE, s, comm);
+    s->sent_records += n_out;
+    s->sent_bytes += n_out * width * sizeof(double);
     for (int side = 0; side < 2; side++)
         for (size_t k = 0; k < h->n_recv[side]; k++)
             unpack(p, h->recv_at[side] + k, fields, recv_side[side] + k * width);

@@ -13,8 +13,12 @@
 typedef struct {
     int n_ranks, rank;
     size_t n_strips;
-    size_t
-        *first_strip; /* n_ranks + 1: rank r owns strips first_strip[r] .. first_strip[r+1] - 1 */
+    /* n_ranks + 1: rank r owns strips first_strip[r] .. first_strip[r + 1] - 1 */
+    size_t *first_strip;
+    /* what this process has sent since the count was last cleared (migration to another
+       process and halo copies; records it keeps are not counted): the traffic figures of
+       docs/scaling.md */
+    unsigned long long sent_records, sent_bytes;
 } slabs;
 
 /* The halo of a step: which own particles go to each neighbouring process, and where theirs
@@ -47,17 +51,17 @@ void slabs_free(slabs *s);
  * so the store holds them in the global order they had: sorting by cell with a stable sort
  * (cells_bin) then gives the order one process would have. Drops the tail (n_total =
  * n_fluid). Returns 0, or -1 when out of memory. */
-int slabs_migrate(const slabs *s, const cell_grid *g, particles *p, MPI_Comm comm);
+int slabs_migrate(slabs *s, const cell_grid *g, particles *p, MPI_Comm comm);
 
 /* After the fluid is sorted by cell: the own particles in the first and last column of cells
  * of the slab go to the process on that side, and theirs are appended to the tail (left's
  * first, then right's), as ghosts of kind GHOST_HALO with the identity map 0, their state
  * copied. A cell is at least the search radius, so every neighbour of an own particle is own
  * or in the halo. Returns 0, or -1 when out of memory. */
-int halo_build(halo_plan *h, const slabs *s, const cell_grid *g, particles *p, MPI_Comm comm);
+int halo_build(halo_plan *h, slabs *s, const cell_grid *g, particles *p, MPI_Comm comm);
 /* Copies the fields of `fields` (a set of FIELD_MASK) of the plan's own particles into the
  * other processes' halos again, after they have changed (a pass, an RK stage). */
-int halo_refresh(const halo_plan *h, const slabs *s, particles *p, uint64_t fields, MPI_Comm comm);
+int halo_refresh(const halo_plan *h, slabs *s, particles *p, uint64_t fields, MPI_Comm comm);
 void halo_free(halo_plan *h);
 
 #endif
