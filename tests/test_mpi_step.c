@@ -7,7 +7,8 @@
  * global figures of the time series (energies, moments, extremes, volume errors), and the
  * step sizes agree. Checked for delta-SPH (geometry, free surface, diffusion, the walls'
  * images of halo particles), delta-plus-SPH (the shifting), delta-ALE-SPH (variable masses)
- * and delta-plus-ALE-SPH (the eta control and EdBC). */
+ * and delta-plus-ALE-SPH (the eta control and EdBC; then with the geometric volume
+ * correction, whose bodies of liquid span the processes). */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -16,6 +17,7 @@
 
 #include "diag/volume.h"
 #include "noise.h"
+#include <stdbool.h>
 #include "parallel/mpi_domain.h"
 
 #include <stdio.h>
@@ -51,12 +53,22 @@ static void setup(solver *s, config *cfg, const char *model)
         for (int d = 0; d < DIM; d++) s->p.x[d][i] += 0.25 * s->dv.dr * noise(&seed);
     /* and a few drops in the air, lambda near 0: EdBC's particles (Eq. 9) */
     for (size_t i = 0; i < s->p.n_fluid; i += 499) s->p.x[1][i] += 0.08;
+    /* and a sheet lifted off the top layer's middle, away from every wall: a free body that
+       spans the processes, whose surface-tension force and moment are balanced as a whole */
+    for (size_t i = 0; i < s->p.n_fluid; i++) {
+        bool middle =
+            s->p.x[0][i] > 0.2 * cfg->tank_length && s->p.x[0][i] < 0.8 * cfg->tank_length;
+        if (DIM == 3)
+            middle &= s->p.x[DIM - 1][i] > 0.35 * cfg->tank_width &&
+                      s->p.x[DIM - 1][i] < 0.65 * cfg->tank_width;
+        if (middle && s->p.x[1][i] > cfg->liquid_height - s->dv.dr) s->p.x[1][i] += 0.08;
+    }
 }
 
 /* A particle's record: its id, the integrated variables after the step, and the per-step
  * fields of the step's start that read neighbours' per-step fields (the free surface's two
  * passes, the shifting, the diffusion): a stale halo shows in these first. */
-enum { RECORD = 1 + PARTICLE_N_INTEGRATED + 3 + 2 * DIM };
+enum { RECORD = 1 + PARTICLE_N_INTEGRATED + 3 + 3 * DIM };
 static void record(const particles *p, size_t i, double *r)
 {
     memcpy(r, &p->id[i], sizeof(double)); /* the bits of the int64 */
@@ -70,6 +82,7 @@ static void record(const particles *p, size_t i, double *r)
     r[v++] = p->diff_rho[i];
     for (int d = 0; d < DIM; d++) r[v++] = p->normal[d][i];
     for (int d = 0; d < DIM; d++) r[v++] = p->shift[d][i];
+    for (int d = 0; d < DIM; d++) r[v++] = p->correction[d][i];
 }
 
 /* Every process's records, gathered on rank 0 in rank order. */
@@ -194,12 +207,29 @@ static void test_delta_ale(void **state)
 }
 
 /* the eta control, which reads the global eps_V1 at every step (eta stays 0 over these
-   steps), and EdBC (with eta = 0, its default), which corrects the drops' densities; the
-   volume correction needs the bodies of liquid, not yet joined across processes (docs/mpi.md) */
+   steps), and EdBC (with eta = 0, its default), which corrects the drops' densities */
 static void test_delta_plus_ale(void **state)
 {
     (void)state;
     same_bits_as_one_process("scheme = delta-plus-ale\nvolume_correction = none");
+}
+
+/* delta-plus-ALE's defaults: the geometric volume correction too, whose normal speed is a sum
+   over each body of liquid: the layer's band spans every process, the drops are bodies of
+   their own */
+static void test_delta_plus_ale_corrected(void **state)
+{
+    (void)state;
+    same_bits_as_one_process("scheme = delta-plus-ale");
+}
+
+/* and surface tension (water's), whose force reads the halo's work arrays (interface,
+   normals, curvature) and balances each body's net force and moment, as the paper's cases
+   run: INM1, INM2, SAP and UPM all have it */
+static void test_surface_tension(void **state)
+{
+    (void)state;
+    same_bits_as_one_process("scheme = delta-plus-ale\n[fluid]\nsurface_tension = 0.0727");
 }
 
 int main(int argc, char **argv)
@@ -212,6 +242,8 @@ int main(int argc, char **argv)
         cmocka_unit_test(test_delta_plus),
         cmocka_unit_test(test_delta_ale),
         cmocka_unit_test(test_delta_plus_ale),
+        cmocka_unit_test(test_delta_plus_ale_corrected),
+        cmocka_unit_test(test_surface_tension),
     };
     int failed = cmocka_run_group_tests(tests, NULL, NULL);
     MPI_Finalize();

@@ -245,6 +245,23 @@ int halo_refresh(const halo_plan *h, slabs *s, particles *p, uint64_t fields, MP
     return 0;
 }
 
+void halo_exchange_values(const halo_plan *h, const slabs *s, const void *own, void *halo,
+                          size_t size, MPI_Datatype type, MPI_Comm comm)
+{
+    char *out = malloc((h->n_send[0] + h->n_send[1] + 1) * size);
+    if (!out) MPI_Abort(comm, 3);
+    char *send_side[2] = {out, out + h->n_send[0] * size};
+    for (int side = 0; side < 2; side++)
+        for (size_t k = 0; k < h->n_send[side]; k++)
+            memcpy(send_side[side] + k * size, (const char *)own + h->send[side][k] * size, size);
+    void *o[2] = {send_side[0], send_side[1]};
+    void *i[2] = {halo, (char *)halo + h->n_recv[0] * size};
+    int n_o[2] = {(int)h->n_send[0], (int)h->n_send[1]};
+    int n_i[2] = {(int)h->n_recv[0], (int)h->n_recv[1]};
+    exchange_sides(o, n_o, i, n_i, type, s, comm);
+    free(out);
+}
+
 void halo_free(halo_plan *h)
 {
     free(h->send[0]);

@@ -29,13 +29,14 @@ typedef struct {
     size_t n_recv[2], recv_at[2];
 } halo_plan;
 
-#define slabs_balance DIM_NAME(slabs_balance)
-#define slabs_owner   DIM_NAME(slabs_owner)
-#define slabs_migrate DIM_NAME(slabs_migrate)
-#define slabs_free    DIM_NAME(slabs_free)
-#define halo_build    DIM_NAME(halo_build)
-#define halo_refresh  DIM_NAME(halo_refresh)
-#define halo_free     DIM_NAME(halo_free)
+#define slabs_balance        DIM_NAME(slabs_balance)
+#define slabs_owner          DIM_NAME(slabs_owner)
+#define slabs_migrate        DIM_NAME(slabs_migrate)
+#define slabs_free           DIM_NAME(slabs_free)
+#define halo_build           DIM_NAME(halo_build)
+#define halo_refresh         DIM_NAME(halo_refresh)
+#define halo_free            DIM_NAME(halo_free)
+#define halo_exchange_values DIM_NAME(halo_exchange_values)
 
 /* The split of grid g's strips that balances the fluid particles of every process (counted
  * where they are now; an exact sum over the processes, so every process finds the same split,
@@ -62,6 +63,11 @@ int halo_build(halo_plan *h, slabs *s, const cell_grid *g, particles *p, MPI_Com
 /* Copies the fields of `fields` (a set of FIELD_MASK) of the plan's own particles into the
  * other processes' halos again, after they have changed (a pass, an RK stage). */
 int halo_refresh(const halo_plan *h, slabs *s, particles *p, uint64_t fields, MPI_Comm comm);
+/* For each halo particle k (0 .. n_halo - 1), halo[k] = its own process's own[i]: a value per
+ * particle of `size` bytes (MPI type `type`) that is not a registry field (a label, a global
+ * index, a work array of a pass). */
+void halo_exchange_values(const halo_plan *h, const slabs *s, const void *own, void *halo,
+                          size_t size, MPI_Datatype type, MPI_Comm comm);
 void halo_free(halo_plan *h);
 
 #endif

@@ -37,6 +37,8 @@ static int32_t find_root(int32_t *parent, int32_t a)
     return a;
 }
 
+int32_t bodies_root(bodies *b, int32_t i) { return find_root(b->parent, i); }
+
 /* the smaller root becomes the set's: each root is the smallest index of its set */
 static void unite(int32_t *parent, int32_t a, int32_t b)
 {
@@ -46,10 +48,11 @@ static void unite(int32_t *parent, int32_t a, int32_t b)
     if (b < a) parent[a] = b;
 }
 
-void bodies_find(const kernel *k, const particles *p, const neighbour_list *nl, bodies *b)
+void bodies_find(const kernel *k, const particles *p, const neighbour_list *nl,
+                 const bodies_domain *d, bodies *b)
 {
-    size_t n = p->n_fluid;
-    for (size_t i = 0; i < n; i++) {
+    size_t n = p->n_fluid, n_nodes = particles_images_begin(p); /* the halo's too */
+    for (size_t i = 0; i < n_nodes; i++) {
         b->parent[i] = (int32_t)i;
         b->at_wall[i] = 0; /* per particle first, per body below */
     }
@@ -82,4 +85,16 @@ void bodies_find(const kernel *k, const particles *p, const neighbour_list *nl, 
             b->at_wall[b->id[i]] |= near_wall;
         }
     }
+    if (d) d->join(d, p, b);
+}
+
+void bodies_sum(const bodies_domain *d, const particles *p, const bodies *b, double *sums,
+                int width, bodies_fold fold, void *context)
+{
+    if (d) {
+        d->sum(d, p, b, sums, width, fold, context);
+        return;
+    }
+    for (size_t k = 0; k < b->count * (size_t)width; k++) sums[k] = 0.0;
+    fold(context, sums);
 }

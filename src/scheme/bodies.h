@@ -11,14 +11,45 @@
 #include <stdint.h>
 
 typedef struct {
-    size_t capacity;  /* particles */
-    int32_t *parent;  /* union-find over the fluid, each root the smallest index of its set */
-    int32_t *id;      /* each S_F particle's body, 0 .. count - 1 in index order; -1 inside */
+    size_t capacity; /* particles */
+    /* union-find over the fluid and the halo, each root its set's smallest index */
+    int32_t *parent;
+    /* each S_F particle's body (the halo's too), 0 .. count - 1 in the order of the bodies'
+       first particles; -1 inside */
+    int32_t *id;
     uint8_t *at_wall; /* per body: a wall's ghost is within 2h of its surface */
     size_t count;     /* bodies of the step */
 } bodies;
 
+/* Adds this process's particles' shares, in index order, to sums[id * width + c] of each
+ * body. */
+typedef void (*bodies_fold)(void *context, double *sums);
+
+/* A liquid split among processes (the MPI build's parallel/mpi_domain.h): bodies that span
+ * processes, numbered and summed as on one process. NULL: one process. */
+typedef struct bodies_domain {
+    /* After bodies_find on every process: joins the bodies across the processes, renumbers
+       them globally (b->id of the fluid and the halo, b->count, b->at_wall). */
+    void (*join)(const struct bodies_domain *d, const particles *p, bodies *b);
+    /* The per-body sums of the whole liquid, as bodies_sum on one process: every process
+       gets the totals of its bodies. */
+    void (*sum)(const struct bodies_domain *d, const particles *p, const bodies *b, double *sums,
+                int width, bodies_fold fold, void *context);
+    /* Copies this process's values of a per-particle array (not a registry field: a work
+       array of a pass) into the other processes' halos, values[n_fluid .. + n_halo). */
+    void (*share)(const struct bodies_domain *d, const particles *p, double *values);
+    void *context;
+} bodies_domain;
+
+/* The halo's values of a work array, through d (NULL: one process, no halo). */
+static inline void bodies_share(const bodies_domain *d, const particles *p, double *values)
+{
+    if (d) d->share(d, p, values);
+}
+
 #define bodies_reserve DIM_NAME(bodies_reserve)
+#define bodies_sum     DIM_NAME(bodies_sum)
+#define bodies_root    DIM_NAME(bodies_root)
 #define bodies_find    DIM_NAME(bodies_find)
 #define bodies_free    DIM_NAME(bodies_free)
 
@@ -26,8 +57,18 @@ typedef struct {
 int bodies_reserve(bodies *b, size_t n);
 void bodies_free(bodies *b);
 
-/* The bodies of the step's S_F (p->surface, fields_geometry). Serial and in index order, so
- * the numbering does not depend on the thread count. */
-void bodies_find(const kernel *k, const particles *p, const neighbour_list *nl, bodies *b);
+/* The bodies of the step's S_F (p->surface), joined across processes through d (NULL: one
+ * process). Serial and in index order, so the numbering does not depend on the thread count. */
+void bodies_find(const kernel *k, const particles *p, const neighbour_list *nl,
+                 const bodies_domain *d, bodies *b);
+
+/* The root of particle i's set in the union-find of the last bodies_find (fluid or halo). */
+int32_t bodies_root(bodies *b, int32_t i);
+
+/* sums[b->count * width] of fold's shares, each body's sum taken in the order of the
+ * particles from 0 (on one process: zeroed, then fold). The sums therefore do not depend on
+ * the number of processes or threads. */
+void bodies_sum(const bodies_domain *d, const particles *p, const bodies *b, double *sums,
+                int width, bodies_fold fold, void *context);
 
 #endif

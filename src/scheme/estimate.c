@@ -67,11 +67,13 @@ void DIM_NAME(estimate_run)(const config *cfg, const derived *dv, int threads, r
     double lists = (row + 1.0) * sizeof(int32_t) * n;
     /* the cell grid: start per cell, item and cell_of per particle */
     double grid = (cells + 1.0) * sizeof(size_t) + 2.0 * sizeof(uint32_t) * total;
-    /* surface tension's work, over fluid and ghosts */
-    double st =
-        cfg->surface_tension > 0.0
-            ? ((2.0 * DIM + 2.0) * sizeof(double) + sizeof(int32_t) + sizeof(surface_body)) * total
-            : 0.0;
+    /* surface tension's work, over fluid and ghosts, and its sums per body (at most one body
+       a particle) */
+    double st = cfg->surface_tension > 0.0
+                    ? ((2.0 * DIM + 2.0 + BALANCE_FIRST + BALANCE_SECOND) * sizeof(double) +
+                       sizeof(int32_t)) *
+                          total
+                    : 0.0;
 
     e->n_fluid = n;
     e->n_ghost = ghosts;

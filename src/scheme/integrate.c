@@ -168,7 +168,8 @@ void solver_advance(solver *s, double t_stop)
             solver_update_eos(s);
             tank_refresh_ghosts(&s->tank, p, &frame, s->pp.rho0, s->pp.c0);
             if (s->pp.surface_tension) /* from the stage's positions (surface_tension.h) */
-                surface_tension_compute(&s->st, &s->pp.k, p, &s->nl, &s->bodies, &s->st_work);
+                surface_tension_compute(&s->st, &s->pp.k, p, &s->nl, &s->bodies,
+                                        solver_bodies_domain(s), &s->st_work);
         }
         rhs_compute(&s->pp, p, &s->nl, &frame, s->eta_control.eta, &s->k);
         if (stage == 0) s->max_acc = max_acceleration(s);

@@ -79,8 +79,8 @@ static bool needs_bodies(const solver *s)
 static long find_bodies(solver *s, const tank_frame *frame)
 {
     (void)frame;
-    if (bodies_reserve(&s->bodies, s->p.n_fluid)) return -1;
-    bodies_find(&s->pp.k, &s->p, &s->nl, &s->bodies);
+    if (bodies_reserve(&s->bodies, particles_images_begin(&s->p))) return -1;
+    bodies_find(&s->pp.k, &s->p, &s->nl, solver_bodies_domain(s), &s->bodies);
     return 0;
 }
 
@@ -95,10 +95,32 @@ static long shifting(solver *s, const tank_frame *frame)
 
 static bool corrects(const solver *s) { return s->pp.volume_correction; }
 
-static long correction(solver *s, const tank_frame *frame)
+static long correction_mismatch(solver *s, const tank_frame *frame)
 {
     (void)frame;
-    return volume_correction_apply(&s->pp, &s->p, &s->nl, &s->bodies, &s->vc_work) ? -1 : 0;
+    volume_correction_mismatch(&s->pp, &s->p);
+    return 0;
+}
+
+static long correction_band(solver *s, const tank_frame *frame)
+{
+    (void)frame;
+    volume_correction_band(&s->pp, &s->p, &s->nl);
+    return 0;
+}
+
+static long correction_velocity(solver *s, const tank_frame *frame)
+{
+    (void)frame;
+    volume_correction_velocity(&s->pp, &s->p, &s->nl);
+    return 0;
+}
+
+static long correction_per_body(solver *s, const tank_frame *frame)
+{
+    (void)frame;
+    return volume_correction_per_body(&s->p, &s->bodies, solver_bodies_domain(s), &s->vc_work) ? -1
+                                                                                               : 0;
 }
 
 static long bounce_back(solver *s, const tank_frame *frame)
@@ -117,8 +139,9 @@ static long frozen_terms(solver *s, const tank_frame *frame)
 static long surface_tension(solver *s, const tank_frame *frame)
 {
     (void)frame;
-    if (surface_tension_reserve(&s->st_work, s->p.n_total)) return -1;
-    surface_tension_compute(&s->st, &s->pp.k, &s->p, &s->nl, &s->bodies, &s->st_work);
+    if (surface_tension_reserve(&s->st_work, s->p.n_total, s->bodies.count)) return -1;
+    surface_tension_compute(&s->st, &s->pp.k, &s->p, &s->nl, &s->bodies, solver_bodies_domain(s),
+                            &s->st_work);
     return 0;
 }
 
@@ -138,9 +161,15 @@ static const step_pass prepare_passes[] = {
     {"EdBC (Eq. 9)", F(surface) | F(lambda), F(rho) | F(p) | F(vol), NULL, edbc},
     {"shifting (Eq. 7)", F(x) | F(vol) | F(lambda) | F(normal) | F(surface), F(shift), shifts,
      shifting},
-    {"volume correction",
-     F(x) | F(rho) | F(vol) | F(kernel_sum) | F(lambda) | F(normal) | F(surface),
-     F(volume_mismatch) | F(correction), corrects, correction},
+    /* the geometric volume correction (volume_correction.h) */
+    {"volume mismatch", F(vol) | F(kernel_sum) | F(surface), F(volume_mismatch), corrects,
+     correction_mismatch},
+    {"volume mismatch in S_F", F(x) | F(vol) | F(surface) | F(volume_mismatch), F(volume_mismatch),
+     corrects, correction_band},
+    {"correction velocity", F(x) | F(rho) | F(vol) | F(grad_rho) | F(lambda) | F(volume_mismatch),
+     F(correction), corrects, correction_velocity},
+    {"one normal speed per body", F(vol) | F(lambda) | F(normal) | F(correction), F(correction),
+     corrects, correction_per_body},
     {"bounce-back", F(x) | F(u) | F(shift) | F(correction), F(u) | F(shift) | F(correction), NULL,
      bounce_back},
     /* the walls' images take the per-step fields of their sources (tank_mirror_step_fields) */

@@ -32,8 +32,10 @@ typedef struct solver_domain {
     /* Copies the fields of `fields` (a set of FIELD_MASK) of the own particles into the
        halos of the other processes. */
     void (*refresh_halo)(const struct solver_domain *d, particles *p, uint64_t fields);
-    /* The global reductions (core/reduce.h). */
+    /* The global reductions (core/reduce.h), and the bodies of liquid across processes
+       (bodies.h). */
     reducer reduce;
+    bodies_domain bodies;
     void *context;
 } solver_domain;
 
@@ -80,6 +82,10 @@ typedef struct solver {
 static inline const reducer *solver_reducer(const solver *s)
 {
     return s->domain ? &s->domain->reduce : NULL;
+}
+static inline const bodies_domain *solver_bodies_domain(const solver *s)
+{
+    return s->domain ? &s->domain->bodies : NULL;
 }
 static inline double solver_sum(const solver *s, const double *a, size_t n)
 {

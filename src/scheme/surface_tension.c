@@ -25,9 +25,21 @@ surface_tension_params surface_tension_setup(const kernel *k, double dr, double 
     return st;
 }
 
-int surface_tension_reserve(surface_tension_work *w, size_t n_total)
+static int reserve_bodies(surface_tension_work *w, size_t n_bodies)
 {
-    if (n_total <= w->capacity) return 0;
+    if (n_bodies <= w->body_capacity) return 0;
+    double *first = realloc(w->first, n_bodies * BALANCE_FIRST * sizeof *first);
+    if (first) w->first = first;
+    double *second = realloc(w->second, n_bodies * BALANCE_SECOND * sizeof *second);
+    if (second) w->second = second;
+    if (!first || !second) return -1;
+    w->body_capacity = n_bodies;
+    return 0;
+}
+
+int surface_tension_reserve(surface_tension_work *w, size_t n_total, size_t n_bodies)
+{
+    if (n_total <= w->capacity) return reserve_bodies(w, n_bodies);
     surface_tension_free(w);
     int ok = 1;
     for (int d = 0; d < DIM; d++) {
@@ -36,13 +48,12 @@ int surface_tension_reserve(surface_tension_work *w, size_t n_total)
     }
     ok &= (w->kappa = malloc(n_total * sizeof(double))) != NULL;
     ok &= (w->band_sum = malloc(n_total * sizeof(double))) != NULL;
-    ok &= (w->body = malloc(n_total * sizeof(surface_body))) != NULL;
     if (!ok) {
         surface_tension_free(w);
         return -1;
     }
     w->capacity = n_total;
-    return 0;
+    return reserve_bodies(w, n_bodies);
 }
 
 void surface_tension_free(surface_tension_work *w)
@@ -53,7 +64,8 @@ void surface_tension_free(surface_tension_work *w)
     }
     free(w->kappa);
     free(w->band_sum);
-    free(w->body);
+    free(w->first);
+    free(w->second);
     memset(w, 0, sizeof *w);
 }
 
@@ -116,7 +128,8 @@ static void mirror_into_ghosts(particles *p, surface_tension_work *w)
  * (docs/surface-tension.md). Other fluid particles keep their own normal; ghosts get their
  * source's, mirrored. */
 static void smoothed_normals(const kernel *k, const particles *p, const neighbour_list *nl,
-                             double *const normal[DIM], double *const smooth[DIM])
+                             const bodies_domain *d, double *const normal[DIM],
+                             double *const smooth[DIM])
 {
     PARALLEL_FOR_OVER_S_F
     for (size_t i = 0; i < p->n_fluid; i++) {
@@ -131,6 +144,7 @@ static void smoothed_normals(const kernel *k, const particles *p, const neighbou
         double norm = vec_norm(sum);
         vec_store(smooth, i, norm > 0.0 ? vec_scale(sum, 1.0 / norm) : sum);
     }
+    for (int c = 0; c < DIM; c++) bodies_share(d, p, smooth[c]);
     for (size_t g = particles_images_begin(p); g < p->n_total; g++) {
         size_t i = (size_t)p->ghost_source[g - p->n_fluid];
         vec_store(smooth, g, ghost_map_vector(particle_ghost_map(p, g), vec_load(smooth, i)));
@@ -141,7 +155,8 @@ static void smoothed_normals(const kernel *k, const particles *p, const neighbou
  * outermost layer is where the normal is reliable, and deeper layers would measure the
  * larger curvature of the parallel surfaces below it. Ghosts copy their source's. */
 static void surface_curvature(const surface_tension_params *st, const kernel *k, const particles *p,
-                              const neighbour_list *nl, double *const normal[DIM], double *kappa)
+                              const neighbour_list *nl, const bodies_domain *d,
+                              double *const normal[DIM], double *kappa)
 {
     PARALLEL_FOR_OVER_S_F
     for (size_t i = 0; i < p->n_fluid; i++) {
@@ -156,6 +171,7 @@ static void surface_curvature(const surface_tension_params *st, const kernel *k,
         }
         kappa[i] = curvature_value(&sums, DIM, st->dr);
     }
+    bodies_share(d, p, kappa);
     tank_copy_to_ghosts(p, kappa);
 }
 
@@ -207,61 +223,103 @@ static void band_force(const surface_tension_params *st, const kernel *k, partic
     }
 }
 
+typedef struct {
+    particles *p;
+    const bodies *bs;
+    const double *first; /* the first fold's totals, for the second */
+} balance_folds;
+
+static void add_force_and_centre(void *context, double *sums)
+{
+    const balance_folds *c = context;
+    const particles *p = c->p;
+    for (size_t i = 0; i < p->n_fluid; i++) {
+        if (p->interface[i] == 0.0) continue;
+        double *b = sums + (size_t)c->bs->id[i] * BALANCE_FIRST;
+        double wi = p->interface[i] * p->vol[i];
+        for (int d = 0; d < DIM; d++) b[BALANCE_FORCE + d] += p->st_force[d][i];
+        b[BALANCE_WEIGHT] += wi;
+        for (int d = 0; d < DIM; d++) b[BALANCE_CENTRE + d] += wi * p->x[d][i];
+    }
+}
+
+static inline bool is_balanced(const bodies *bs, const double *first, int32_t id)
+{
+    return !bs->at_wall[id] && first[(size_t)id * BALANCE_FIRST + BALANCE_WEIGHT] > 0.0;
+}
+
+/* r of particle i from its body's centre */
+static inline vec from_centre(const particles *p, const double *b, size_t i)
+{
+    vec centre;
+    for (int d = 0; d < DIM; d++) centre.c[d] = b[BALANCE_CENTRE + d];
+    return vec_sub(vec_load(p->x, i), vec_scale(centre, 1.0 / b[BALANCE_WEIGHT]));
+}
+
+/* the resultant removed; moment and inertia of what is left */
+static void remove_force_add_moment(void *context, double *sums)
+{
+    const balance_folds *c = context;
+    particles *p = c->p;
+    for (size_t i = 0; i < p->n_fluid; i++) {
+        if (p->interface[i] == 0.0) continue;
+        int32_t id = c->bs->id[i];
+        if (!is_balanced(c->bs, c->first, id)) continue;
+        const double *b = c->first + (size_t)id * BALANCE_FIRST;
+        double wi = p->interface[i] * p->vol[i];
+        vec force;
+        for (int d = 0; d < DIM; d++) force.c[d] = b[BALANCE_FORCE + d];
+        vec f = vec_axpy(vec_load(p->st_force, i), -wi / b[BALANCE_WEIGHT], force);
+        vec_store(p->st_force, i, f);
+        vec r = from_centre(p, b, i);
+        double *m = sums + (size_t)id * BALANCE_SECOND;
+        moment_add(m + BALANCE_MOMENT, 1.0, r, f);
+        inertia_add((double(*)[3])(m + BALANCE_INERTIA), wi, r);
+    }
+}
+
 /* In the continuum, the surface force on a closed body of liquid has no resultant and no
  * moment; the discrete one leaves small residuals of both, removed here body by body: the
  * resultant in proportion to delta V, the moment as the field delta V (Omega x r) about the
  * body's centre whose moment it is (a rigid rotation's pattern, which adds no resultant). A
  * body whose interface comes within 2h of a wall keeps both: the wall takes the reaction of
- * its contact lines. The bodies are the step's (bodies_find). Serial and in
- * index order, over the interface particles only: the result does not depend on the thread
- * count. */
-static void balance_bodies(particles *p, const bodies *bs, surface_tension_work *w)
+ * its contact lines. The bodies are the step's (bodies_find); their sums are folds
+ * in index order over the interface particles (bodies_sum): the result does not depend on
+ * the thread count or, through d, the process count. */
+static void balance_bodies(particles *p, const bodies *bs, const bodies_domain *d,
+                           surface_tension_work *w)
 {
-    size_t n = p->n_fluid;
-    for (size_t i = 0; i < n; i++) { /* the sums of the stage start at 0 */
+    balance_folds folds = {p, bs, w->first};
+    bodies_sum(d, p, bs, w->first, BALANCE_FIRST, add_force_and_centre, &folds);
+    bodies_sum(d, p, bs, w->second, BALANCE_SECOND, remove_force_add_moment, &folds);
+    for (size_t i = 0; i < p->n_fluid; i++) { /* the moment removed */
         if (p->interface[i] == 0.0) continue;
         int32_t id = bs->id[i];
-        w->body[id] = (surface_body){.at_wall = bs->at_wall[id]};
-    }
-    for (size_t i = 0; i < n; i++) { /* resultant, weight and centre */
-        if (p->interface[i] == 0.0) continue;
-        surface_body *b = &w->body[bs->id[i]];
+        if (!is_balanced(bs, w->first, id)) continue;
+        const double *b = w->first + (size_t)id * BALANCE_FIRST;
+        double *m = w->second + (size_t)id * BALANCE_SECOND;
+        vec r = from_centre(p, b, i);
         double wi = p->interface[i] * p->vol[i];
-        b->force = vec_add(b->force, vec_load(p->st_force, i));
-        b->weight += wi;
-        b->centre = vec_axpy(b->centre, wi, vec_load(p->x, i));
-    }
-    for (size_t i = 0; i < n; i++) { /* the resultant removed; moment and inertia */
-        if (p->interface[i] == 0.0) continue;
-        surface_body *b = &w->body[bs->id[i]];
-        if (b->at_wall || !(b->weight > 0.0)) continue;
-        double wi = p->interface[i] * p->vol[i];
-        vec f = vec_axpy(vec_load(p->st_force, i), -wi / b->weight, b->force);
-        vec_store(p->st_force, i, f);
-        vec r = vec_sub(vec_load(p->x, i), vec_scale(b->centre, 1.0 / b->weight));
-        moment_add(b->moment, 1.0, r, f);
-        inertia_add(b->inertia, wi, r);
-    }
-    for (size_t i = 0; i < n; i++) { /* the moment removed */
-        if (p->interface[i] == 0.0) continue;
-        surface_body *b = &w->body[bs->id[i]];
-        if (b->at_wall || !(b->weight > 0.0)) continue;
-        vec r = vec_sub(vec_load(p->x, i), vec_scale(b->centre, 1.0 / b->weight));
-        double wi = p->interface[i] * p->vol[i];
-        vec f = vec_axpy(vec_load(p->st_force, i), -wi, rotation_field(b->inertia, b->moment, r));
+        vec f =
+            vec_axpy(vec_load(p->st_force, i), -wi,
+                     rotation_field((double(*)[3])(m + BALANCE_INERTIA), m + BALANCE_MOMENT, r));
         vec_store(p->st_force, i, f);
     }
 }
 
 void surface_tension_compute(const surface_tension_params *st, const kernel *k, particles *p,
-                             const neighbour_list *nl, const bodies *b, surface_tension_work *w)
+                             const neighbour_list *nl, const bodies *b, const bodies_domain *d,
+                             surface_tension_work *w)
 {
     interface_and_normals(st, k, p, nl, w);
+    bodies_share(d, p, p->interface);
+    bodies_share(d, p, w->band_sum);
+    for (int c = 0; c < DIM; c++) bodies_share(d, p, w->normal[c]);
     mirror_into_ghosts(p, w);
-    smoothed_normals(k, p, nl, w->normal, w->smooth);
-    surface_curvature(st, k, p, nl, w->smooth, w->kappa);
+    smoothed_normals(k, p, nl, d, w->normal, w->smooth);
+    surface_curvature(st, k, p, nl, d, w->smooth, w->kappa);
     band_force(st, k, p, nl, w->smooth, w->kappa, w->band_sum);
-    balance_bodies(p, b, w);
+    balance_bodies(p, b, d, w);
 }
 
 double surface_tension_power(const particles *p, double *scratch, const reducer *r)

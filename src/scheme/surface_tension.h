@@ -21,24 +21,29 @@ typedef struct {
     double lambda_min;    /* the normal uses L^-1 where lambda exceeds this (theory §2) */
 } surface_tension_params;
 
-/* What one body of liquid sums for the balance of its force and moment. */
-typedef struct {
-    uint8_t at_wall;      /* its surface comes within 2h of a wall: the wall takes the reaction */
-    double weight;        /* sum delta V over its surface */
-    vec centre;           /* the delta V-weighted centre of its surface */
-    vec force;            /* the net force on it */
-    double moment[3];     /* the net moment about its centre (2D: the z component alone) */
-    double inertia[3][3]; /* sum delta V (|r|^2 I - r r) about its centre (2D: [2][2]) */
-} surface_body;
+/* What one body of liquid sums for the balance of its force and moment, in two folds over
+ * its particles (bodies_sum): first the net force, sum delta V and the delta V-weighted
+ * centre of its surface, then, with those, the net moment about that centre and the
+ * inertia sum delta V (|r|^2 I - r r) (2D: their z components alone). */
+enum {
+    BALANCE_FORCE = 0,
+    BALANCE_WEIGHT = DIM,
+    BALANCE_CENTRE = DIM + 1,
+    BALANCE_FIRST = 2 * DIM + 1, /* doubles a body of the first fold */
+    BALANCE_MOMENT = 0,
+    BALANCE_INERTIA = 3,
+    BALANCE_SECOND = 12 /* of the second */
+};
 
 /* Work arrays of the force, kept between calls so that a stage never allocates. */
 typedef struct {
-    size_t capacity;     /* particles, fluid and ghosts */
-    double *normal[DIM]; /* the normal of S_F at the stage's positions */
-    double *smooth[DIM]; /* its Shepard average over the free surface */
-    double *kappa;       /* the curvature of the free-surface particles */
-    double *band_sum;    /* sum W V over S_F, self included: what delta V spreads over */
-    surface_body *body;  /* indexed by body (bodies.h) */
+    size_t capacity;        /* particles, fluid and ghosts */
+    double *normal[DIM];    /* the normal of S_F at the stage's positions */
+    double *smooth[DIM];    /* its Shepard average over the free surface */
+    double *kappa;          /* the curvature of the free-surface particles */
+    double *band_sum;       /* sum W V over S_F, self included: what delta V spreads over */
+    size_t body_capacity;   /* bodies */
+    double *first, *second; /* the balance's sums, BALANCE_FIRST and BALANCE_SECOND a body */
 } surface_tension_work;
 
 #define surface_tension_setup   DIM_NAME(surface_tension_setup)
@@ -51,8 +56,9 @@ typedef struct {
 surface_tension_params surface_tension_setup(const kernel *k, double dr, double sigma,
                                              double lambda_min);
 
-/* Makes room in w for p->n_total particles. Returns 0, or -1 when out of memory. */
-int surface_tension_reserve(surface_tension_work *w, size_t n_total);
+/* Makes room in w for n_total particles and n_bodies bodies. Returns 0, or -1 when out of
+ * memory. */
+int surface_tension_reserve(surface_tension_work *w, size_t n_total, size_t n_bodies);
 void surface_tension_free(surface_tension_work *w);
 
 /* Fills p->interface (delta_Sigma, 1/m, normalised so that it integrates to 1 across a flat
@@ -61,9 +67,11 @@ void surface_tension_free(surface_tension_work *w);
  * mirrors interface and S_F into the ghosts; w holds room for p->n_total particles
  * (surface_tension_reserve). On every body of liquid that touches no wall, the force and its moment
  * sum to zero exactly, as the continuum's do: each such body gets its discrete residuals removed,
- * so that its momentum and angular momentum are conserved. */
+ * so that its momentum and angular momentum are conserved. Across processes through d (the
+ * halo's work arrays, the bodies' sums; NULL: one process). */
 void surface_tension_compute(const surface_tension_params *st, const kernel *k, particles *p,
-                             const neighbour_list *nl, const bodies *b, surface_tension_work *w);
+                             const neighbour_list *nl, const bodies *b, const bodies_domain *d,
+                             surface_tension_work *w);
 
 /* The surface energy sigma sum delta V (J; per unit width in 2D): sigma times the discrete
  * interface area, whose measure delta integrates to 1 across a flat surface. Needs this

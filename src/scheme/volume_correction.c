@@ -83,21 +83,16 @@ static void correction_velocity(const physics_params *pp, particles *p, const ne
 static int reserve(volume_correction_work *w, size_t n_bodies)
 {
     if (n_bodies <= w->capacity) return 0;
-    volume_correction_free(w);
-    w->normal_flux = malloc(n_bodies * sizeof *w->normal_flux);
-    w->band_volume = malloc(n_bodies * sizeof *w->band_volume);
-    if (!w->normal_flux || !w->band_volume) {
-        volume_correction_free(w);
-        return -1;
-    }
+    double *grown = realloc(w->sums, 2 * n_bodies * sizeof *grown);
+    if (!grown) return -1;
+    w->sums = grown;
     w->capacity = n_bodies;
     return 0;
 }
 
 void volume_correction_free(volume_correction_work *w)
 {
-    free(w->normal_flux);
-    free(w->band_volume);
+    free(w->sums);
     memset(w, 0, sizeof *w);
 }
 
@@ -110,38 +105,60 @@ void volume_correction_free(volume_correction_work *w)
  * is never smooth at the particle scale, so those moves never cancel: on a drop of water at
  * rest (docs/surface-tension.md) they fed currents that grew over seconds. Where lambda <
  * 0.4 there is no reliable normal and no correction (correction_velocity): such particles
- * take no part. Serial and in index order: the sums do not depend on the thread count. */
+ * take no part. The sums are serial and in index order (bodies_sum): they do not depend on
+ * the thread count. */
 static bool moves_with_its_body(const particles *p, const bodies *b, size_t i)
 {
     return b->id[i] >= 0 && p->lambda[i] >= SHIFTING_LAMBDA_MIN;
 }
 
-static void surface_moves_per_body(particles *p, const bodies *b, volume_correction_work *w)
+typedef struct {
+    const particles *p;
+    const bodies *b;
+} body_shares;
+
+static void add_normal_flux(void *context, double *sums)
 {
-    for (size_t id = 0; id < b->count; id++) w->normal_flux[id] = w->band_volume[id] = 0.0;
+    const body_shares *c = context;
+    const particles *p = c->p;
     for (size_t i = 0; i < p->n_fluid; i++) {
-        if (!moves_with_its_body(p, b, i)) continue;
+        if (!moves_with_its_body(p, c->b, i)) continue;
         vec dv = vec_load(p->correction, i), n = vec_load(p->normal, i);
-        w->normal_flux[b->id[i]] += p->vol[i] * vec_dot(dv, n);
-        w->band_volume[b->id[i]] += p->vol[i];
+        double *sum = sums + 2 * (size_t)c->b->id[i];
+        sum[0] += p->vol[i] * vec_dot(dv, n);
+        sum[1] += p->vol[i];
     }
+}
+
+int volume_correction_per_body(particles *p, const bodies *b, const bodies_domain *d,
+                               volume_correction_work *w)
+{
+    if (reserve(w, b->count)) return -1;
+    body_shares shares = {p, b};
+    bodies_sum(d, p, b, w->sums, 2, add_normal_flux, &shares);
 #pragma omp parallel for schedule(static)
     for (size_t i = 0; i < p->n_fluid; i++) {
         if (!moves_with_its_body(p, b, i)) continue;
         vec dv = vec_load(p->correction, i), n = vec_load(p->normal, i);
-        double mean = w->normal_flux[b->id[i]] / w->band_volume[b->id[i]];
+        const double *sum = w->sums + 2 * (size_t)b->id[i];
+        double mean = sum[0] / sum[1];
         vec_store(p->correction, i, vec_axpy(dv, mean - vec_dot(dv, n), n));
     }
+    return 0;
 }
 
-int volume_correction_apply(const physics_params *pp, particles *p, const neighbour_list *nl,
-                            const bodies *b, volume_correction_work *w)
+void volume_correction_mismatch(const physics_params *pp, particles *p)
 {
-    if (reserve(w, b->count)) return -1;
     interior_mismatch(pp->lattice_kernel_sum, p);
+}
+
+void volume_correction_band(const physics_params *pp, particles *p, const neighbour_list *nl)
+{
     surface_band_mismatch(&pp->k, p, nl);
+}
+
+void volume_correction_velocity(const physics_params *pp, particles *p, const neighbour_list *nl)
+{
     tank_copy_to_ghosts(p, p->volume_mismatch);
     correction_velocity(pp, p, nl);
-    surface_moves_per_body(p, b, w);
-    return 0;
 }

@@ -14,13 +14,15 @@
 /* The sums of one step per body (bodies.h), kept between steps so that a step rarely
  * allocates. */
 typedef struct {
-    size_t capacity;     /* bodies */
-    double *normal_flux; /* sum V dv . n over the body's S_F */
-    double *band_volume; /* sum V over it */
+    size_t capacity; /* bodies */
+    double *sums;    /* per body: sum V dv . n over its S_F, and sum V over it */
 } volume_correction_work;
 
 #define volume_correction_lattice_sum DIM_NAME(volume_correction_lattice_sum)
-#define volume_correction_apply       DIM_NAME(volume_correction_apply)
+#define volume_correction_mismatch    DIM_NAME(volume_correction_mismatch)
+#define volume_correction_band        DIM_NAME(volume_correction_band)
+#define volume_correction_velocity    DIM_NAME(volume_correction_velocity)
+#define volume_correction_per_body    DIM_NAME(volume_correction_per_body)
 #define volume_correction_free        DIM_NAME(volume_correction_free)
 
 /* kappa = dr^n sum_j W(|r_j|) over the points r_j of the lattice of spacing dr (self
@@ -28,7 +30,8 @@ typedef struct {
 double volume_correction_lattice_sum(const kernel *k, double dr);
 
 /* The correction velocity dv of the step into p->correction of the fluid, after the geometry
- * and before bounce-back, frozen over the RK stages like the shifting velocity:
+ * and before bounce-back, frozen over the RK stages like the shifting velocity, in four
+ * passes (each reads at the neighbours what the one before wrote):
  *   e_i  = V_i sum_j W_ij / kappa - 1 off S_F; in S_F the Shepard average of the interior
  *          neighbours' e (0 with none: the free surface itself, drops);
  *   dv_i = -h U_max sum_j (e_j - e_i) grad_i W_ij V_j, Eq. (7)'s scale, none where
@@ -37,10 +40,16 @@ double volume_correction_lattice_sum(const kernel *k, double dr);
  *          mean over the particle's body (b): the surface must move for the volume to
  *          change, but the correction changes each body's volume, not its shape.
  * The particles then move with u + du + dv, and their density is resampled along dv
- * (rhs.c, physics/volume_correction.h); masses and velocities are left alone. Writes
- * p->volume_mismatch of the fluid and the ghosts. Returns 0, or -1 when out of memory. */
-int volume_correction_apply(const physics_params *pp, particles *p, const neighbour_list *nl,
-                            const bodies *b, volume_correction_work *w);
+ * (rhs.c, physics/volume_correction.h); masses and velocities are left alone.
+ * volume_correction_mismatch writes e off S_F, volume_correction_band e in S_F,
+ * volume_correction_velocity dv (and e of the walls' images), volume_correction_per_body
+ * the normal component in S_F (the bodies' sums through d, NULL on one process; returns 0,
+ * or -1 when out of memory). */
+void volume_correction_mismatch(const physics_params *pp, particles *p);
+void volume_correction_band(const physics_params *pp, particles *p, const neighbour_list *nl);
+void volume_correction_velocity(const physics_params *pp, particles *p, const neighbour_list *nl);
+int volume_correction_per_body(particles *p, const bodies *b, const bodies_domain *d,
+                               volume_correction_work *w);
 void volume_correction_free(volume_correction_work *w);
 
 #endif
