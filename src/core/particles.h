@@ -101,6 +101,7 @@ enum {
 #define FIELD_BIT_ENUM(type, name, flags, snapshot, comment) FIELD_BIT_##name,
     PARTICLE_FIELDS(FIELD_BIT_ENUM, FIELD_BIT_ENUM) FIELD_BITS
 };
+_Static_assert(FIELD_BITS <= 64, "the field masks are 64 bits");
 #define FIELD_MASK(name) (UINT64_C(1) << FIELD_BIT_##name)
 
 /* The tail [n_fluid, n_total) holds first the n_halo halo particles of an MPI run (none on one

@@ -19,21 +19,23 @@ static inline double share(const particles *p, measure m, size_t i, double cell_
     return 1.0;
 }
 
-static double mean_share(const particles *p, measure m, double cell_volume, double *scratch,
-                         const reducer *r)
+/* The mean over the n_all particles of every process. */
+static double mean_share(const particles *p, measure m, double cell_volume, double n_all,
+                         double *scratch, const reducer *r)
 {
 #pragma omp parallel for schedule(static)
     for (size_t i = 0; i < p->n_fluid; i++) scratch[i] = share(p, m, i, cell_volume);
-    return reducer_sum(r, scratch, p->n_fluid) / (double)reducer_total(r, (long)p->n_fluid);
+    return reducer_sum(r, scratch, p->n_fluid) / n_all;
 }
 
 void volume_compute(const particles *p, double cell_volume, double *scratch, const reducer *r,
                     volume_errors *out)
 {
     /* Eq. (12): sum Vgeo / (N dr^n) - 1 */
-    out->eps_v1 = mean_share(p, MEASURE_KERNEL, cell_volume, scratch, r) - 1.0;
-    out->eps_v2 = 1.0 - mean_share(p, MEASURE_GAMMA, cell_volume, scratch, r);
-    out->eps_v3 = 1.0 - mean_share(p, MEASURE_LAMBDA, cell_volume, scratch, r);
+    double n_all = (double)reducer_total(r, (long)p->n_fluid);
+    out->eps_v1 = mean_share(p, MEASURE_KERNEL, cell_volume, n_all, scratch, r) - 1.0;
+    out->eps_v2 = 1.0 - mean_share(p, MEASURE_GAMMA, cell_volume, n_all, scratch, r);
+    out->eps_v3 = 1.0 - mean_share(p, MEASURE_LAMBDA, cell_volume, n_all, scratch, r);
     long n = 0;
 #pragma omp parallel for schedule(static) reduction(+ : n)
     for (size_t i = 0; i < p->n_fluid; i++) n += p->surface[i] == SURFACE_FREE;

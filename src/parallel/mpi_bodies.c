@@ -1,6 +1,7 @@
 /* mpi_bodies: the bodies of liquid of a run split by slabs (bodies.h's bodies_domain). */
 #include "parallel/mpi_bodies.h"
 #include "diag/freesurface.h"
+#include "parallel/mpi_reduce.h"
 
 #include <stdbool.h>
 #include <stdint.h>
@@ -14,13 +15,6 @@
  * rounds). The bodies are then numbered in the order of their first particles, as on one
  * process. */
 static bool in_band(const particles *p, size_t v) { return p->surface[v] != SURFACE_INTERIOR; }
-
-static int64_t first_global_index(const mpi_domain *d, size_t n)
-{
-    int64_t mine = (int64_t)n, before = 0;
-    MPI_Exscan(&mine, &before, 1, MPI_INT64_T, MPI_SUM, d->comm);
-    return d->slabs.rank == 0 ? 0 : before;
-}
 
 /* One round: every set's smallest label over its members, own and halo; returns whether an
  * own label changed. */
@@ -56,25 +50,21 @@ static void join(const bodies_domain *hooks, const particles *p, bodies *b)
     size_t n = p->n_fluid, nodes = particles_images_begin(p);
     int64_t *label = malloc((nodes + 1) * sizeof *label);
     int64_t *set_min = malloc((nodes + 1) * sizeof *set_min);
-    int32_t *local_id = malloc((n + 1) * sizeof *local_id);
-    if (!label || !set_min || !local_id) MPI_Abort(comm, 3);
-    int64_t first = first_global_index(d, n);
+    if (!label || !set_min) MPI_Abort(comm, 3);
+    int64_t first = (int64_t)mpi_first_index(n, comm);
     for (size_t v = 0; v < n; v++) label[v] = first + (int64_t)v;
-    halo_exchange_values(&d->halo, &d->slabs, label, label + n, sizeof *label, MPI_INT64_T, comm);
-    for (;;) {
-        int changed = relabel(p, b, label, set_min), anywhere = 0;
-        MPI_Allreduce(&changed, &anywhere, 1, MPI_INT, MPI_LOR, comm);
-        if (!anywhere) break;
+    int anywhere;
+    do {
         halo_exchange_values(&d->halo, &d->slabs, label, label + n, sizeof *label, MPI_INT64_T,
                              comm);
-    }
+        int changed = relabel(p, b, label, set_min);
+        MPI_Allreduce(&changed, &anywhere, 1, MPI_INT, MPI_LOR, comm);
+    } while (anywhere);
     /* the first particles of the bodies, in global order: the ranks' lists one after another */
     int count = 0, ranks = d->slabs.n_ranks;
-    for (size_t v = 0; v < n; v++) count += in_band(p, v) && label[v] == first + (int64_t)v;
     int *counts = malloc(2 * (size_t)ranks * sizeof *counts), *at = counts + ranks;
-    int64_t *mine = malloc(((size_t)count + 1) * sizeof *mine);
-    if (!counts || !mine) MPI_Abort(comm, 3);
-    count = 0;
+    int64_t *mine = set_min; /* its room, free now */
+    if (!counts) MPI_Abort(comm, 3);
     for (size_t v = 0; v < n; v++)
         if (in_band(p, v) && label[v] == first + (int64_t)v) mine[count++] = label[v];
     MPI_Allgather(&count, 1, MPI_INT, counts, 1, MPI_INT, comm);
@@ -88,15 +78,15 @@ static void join(const bodies_domain *hooks, const particles *p, bodies *b)
     if (!roots || !at_wall) MPI_Abort(comm, 3);
     MPI_Allgatherv(mine, count, MPI_INT64_T, roots, counts, at, MPI_INT64_T, comm);
     /* a body at a wall anywhere is at a wall: bodies_find's local flags, per global body */
-    for (size_t v = 0; v < n; v++) local_id[v] = b->id[v];
     for (size_t v = 0; v < nodes; v++) {
         if (!in_band(p, v)) {
             b->id[v] = -1;
             continue;
         }
+        int32_t local = b->id[v]; /* bodies_find's, for its at_wall */
         int64_t *root = bsearch(&label[v], roots, total, sizeof *roots, compare_int64);
         b->id[v] = root ? (int32_t)(root - roots) : -1; /* a halo body no own particle joins */
-        if (v < n && root) at_wall[b->id[v]] |= b->at_wall[local_id[v]];
+        if (v < n && root) at_wall[b->id[v]] |= b->at_wall[local];
     }
     uint8_t *grown = total > b->capacity ? realloc(b->at_wall, total) : b->at_wall;
     if (!grown) MPI_Abort(comm, 3);
@@ -105,9 +95,7 @@ static void join(const bodies_domain *hooks, const particles *p, bodies *b)
     b->count = total;
     free(label);
     free(set_min);
-    free(local_id);
     free(counts);
-    free(mine);
     free(roots);
     free(at_wall);
 }

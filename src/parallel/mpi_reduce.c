@@ -183,3 +183,12 @@ long mpi_reduce_total(long local, MPI_Comm comm)
     MPI_Allreduce(&local, &global, 1, MPI_LONG, MPI_SUM, comm);
     return global;
 }
+
+uint64_t mpi_first_index(size_t n, MPI_Comm comm)
+{
+    int rank;
+    MPI_Comm_rank(comm, &rank);
+    uint64_t mine = n, before = 0;
+    MPI_Exscan(&mine, &before, 1, MPI_UINT64_T, MPI_SUM, comm);
+    return rank == 0 ? 0 : before; /* Exscan leaves rank 0's undefined */
+}

@@ -8,6 +8,7 @@
 
 #include <mpi.h>
 #include <stddef.h>
+#include <stdint.h>
 
 /* reduce_sum of the concatenation of every process's a[0 .. n): the blocks of REDUCE_BLOCK
  * global indices are summed each on the process that holds its first index, the parts of it
@@ -18,6 +19,8 @@ double mpi_reduce_sum(const double *a, size_t n, MPI_Comm comm);
  * any order. */
 double mpi_reduce_max(const double *a, size_t n, MPI_Comm comm);
 double mpi_reduce_min(const double *a, size_t n, MPI_Comm comm);
+/* The global index of this process's first element: the counts n of the processes before it. */
+uint64_t mpi_first_index(size_t n, MPI_Comm comm);
 /* The total of every process's count (exact in any order). */
 long mpi_reduce_total(long local, MPI_Comm comm);
 

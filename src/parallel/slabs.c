@@ -205,8 +205,6 @@ int halo_build(halo_plan *h, slabs *s, const cell_grid *g, particles *p, MPI_Com
     exchange(sent, got, 1, MPI_UNSIGNED_LONG_LONG, s, comm);
     h->n_recv[0] = (size_t)got[0];
     h->n_recv[1] = (size_t)got[1];
-    h->recv_at[0] = p->n_fluid;
-    h->recv_at[1] = p->n_fluid + h->n_recv[0];
     size_t n_total = p->n_fluid + h->n_recv[0] + h->n_recv[1];
     if (particles_reserve(p, n_total)) MPI_Abort(comm, 3);
     for (size_t t = p->n_fluid; t < n_total; t++) {
@@ -219,6 +217,27 @@ int halo_build(halo_plan *h, slabs *s, const cell_grid *g, particles *p, MPI_Com
     return halo_refresh(h, s, p, state_fields(), comm);
 }
 
+/* The plan's items, `per_item` elements of `type` (`item_bytes` bytes in all) each, from out
+ * (the left side's, then the right side's) to the neighbours, and theirs into in (the left
+ * neighbour's, then the right's); counted in s's traffic. */
+static void exchange_plan(const halo_plan *h, slabs *s, void *out, void *in, int per_item,
+                          size_t item_bytes, MPI_Datatype type, MPI_Comm comm)
+{
+    void *o[2] = {out, (char *)out + h->n_send[0] * item_bytes};
+    void *i[2] = {in, (char *)in + h->n_recv[0] * item_bytes};
+    int n_o[2] = {(int)h->n_send[0] * per_item, (int)h->n_send[1] * per_item};
+    int n_i[2] = {(int)h->n_recv[0] * per_item, (int)h->n_recv[1] * per_item};
+    exchange_sides(o, n_o, i, n_i, type, s, comm);
+    s->sent_records += h->n_send[0] + h->n_send[1];
+    s->sent_bytes += (h->n_send[0] + h->n_send[1]) * item_bytes;
+}
+
+/* Every item the plan sends, side by side: its own particle's index. */
+static size_t plan_item(const halo_plan *h, size_t k)
+{
+    return k < h->n_send[0] ? h->send[0][k] : h->send[1][k - h->n_send[0]];
+}
+
 int halo_refresh(const halo_plan *h, slabs *s, particles *p, uint64_t fields, MPI_Comm comm)
 {
     size_t width = record_doubles(fields);
@@ -226,39 +245,23 @@ int halo_refresh(const halo_plan *h, slabs *s, particles *p, uint64_t fields, MP
     double *out = malloc((n_out + 1) * width * sizeof *out);
     double *in = malloc((n_in + 1) * width * sizeof *in);
     if (!out || !in) MPI_Abort(comm, 3);
-    double *send_side[2] = {out, out + h->n_send[0] * width};
-    double *recv_side[2] = {in, in + h->n_recv[0] * width};
-    for (int side = 0; side < 2; side++)
-        for (size_t k = 0; k < h->n_send[side]; k++)
-            pack(p, h->send[side][k], fields, send_side[side] + k * width);
-    void *o[2] = {send_side[0], send_side[1]}, *i[2] = {recv_side[0], recv_side[1]};
-    int n_o[2] = {(int)(h->n_send[0] * width), (int)(h->n_send[1] * width)};
-    int n_i[2] = {(int)(h->n_recv[0] * width), (int)(h->n_recv[1] * width)};
-    exchange_sides(o, n_o, i, n_i, MPI_DOUBLE, s, comm);
-    s->sent_records += n_out;
-    s->sent_bytes += n_out * width * sizeof(double);
-    for (int side = 0; side < 2; side++)
-        for (size_t k = 0; k < h->n_recv[side]; k++)
-            unpack(p, h->recv_at[side] + k, fields, recv_side[side] + k * width);
+    for (size_t k = 0; k < n_out; k++) pack(p, plan_item(h, k), fields, out + k * width);
+    exchange_plan(h, s, out, in, (int)width, width * sizeof *out, MPI_DOUBLE, comm);
+    for (size_t k = 0; k < n_in; k++) unpack(p, p->n_fluid + k, fields, in + k * width);
     free(out);
     free(in);
     return 0;
 }
 
-void halo_exchange_values(const halo_plan *h, const slabs *s, const void *own, void *halo,
-                          size_t size, MPI_Datatype type, MPI_Comm comm)
+void halo_exchange_values(const halo_plan *h, slabs *s, const void *own, void *halo, size_t size,
+                          MPI_Datatype type, MPI_Comm comm)
 {
-    char *out = malloc((h->n_send[0] + h->n_send[1] + 1) * size);
+    size_t n_out = h->n_send[0] + h->n_send[1];
+    char *out = malloc((n_out + 1) * size);
     if (!out) MPI_Abort(comm, 3);
-    char *send_side[2] = {out, out + h->n_send[0] * size};
-    for (int side = 0; side < 2; side++)
-        for (size_t k = 0; k < h->n_send[side]; k++)
-            memcpy(send_side[side] + k * size, (const char *)own + h->send[side][k] * size, size);
-    void *o[2] = {send_side[0], send_side[1]};
-    void *i[2] = {halo, (char *)halo + h->n_recv[0] * size};
-    int n_o[2] = {(int)h->n_send[0], (int)h->n_send[1]};
-    int n_i[2] = {(int)h->n_recv[0], (int)h->n_recv[1]};
-    exchange_sides(o, n_o, i, n_i, type, s, comm);
+    for (size_t k = 0; k < n_out; k++)
+        memcpy(out + k * size, (const char *)own + plan_item(h, k) * size, size);
+    exchange_plan(h, s, out, halo, 1, size, type, comm);
     free(out);
 }
 

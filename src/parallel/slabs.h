@@ -21,12 +21,13 @@ typedef struct {
     unsigned long long sent_records, sent_bytes;
 } slabs;
 
-/* The halo of a step: which own particles go to each neighbouring process, and where theirs
- * sit in this store. Side 0 is the process on the left (rank - 1), side 1 the right. */
+/* The halo of a step: which own particles go to each neighbouring process, and how many of
+ * theirs this store holds (from n_fluid on: the left neighbour's, then the right's). Side 0
+ * is the process on the left (rank - 1), side 1 the right. */
 typedef struct {
     size_t n_send[2], capacity[2];
     size_t *send[2]; /* indices of own particles, ascending */
-    size_t n_recv[2], recv_at[2];
+    size_t n_recv[2];
 } halo_plan;
 
 #define slabs_balance        DIM_NAME(slabs_balance)
@@ -66,8 +67,8 @@ int halo_refresh(const halo_plan *h, slabs *s, particles *p, uint64_t fields, MP
 /* For each halo particle k (0 .. n_halo - 1), halo[k] = its own process's own[i]: a value per
  * particle of `size` bytes (MPI type `type`) that is not a registry field (a label, a global
  * index, a work array of a pass). */
-void halo_exchange_values(const halo_plan *h, const slabs *s, const void *own, void *halo,
-                          size_t size, MPI_Datatype type, MPI_Comm comm);
+void halo_exchange_values(const halo_plan *h, slabs *s, const void *own, void *halo, size_t size,
+                          MPI_Datatype type, MPI_Comm comm);
 void halo_free(halo_plan *h);
 
 #endif

@@ -11,7 +11,6 @@
 
 #include <stdint.h>
 
-_Static_assert(FIELD_BITS <= 64, "the field masks are 64 bits");
 #define F(name) FIELD_MASK(name)
 
 /* The fields a wall ghost takes from its source at every refresh (tank_refresh_ghosts): a pass
