@@ -8,7 +8,8 @@
  * step sizes agree. Checked for delta-SPH (geometry, free surface, diffusion, the walls'
  * images of halo particles), delta-plus-SPH (the shifting), delta-ALE-SPH (variable masses)
  * and delta-plus-ALE-SPH (the eta control and EdBC; then with the geometric volume
- * correction, whose bodies of liquid span the processes). */
+ * correction, whose bodies of liquid span the processes; with surface tension; in a tank that
+ * rolls as it sways). The global figures include the loads on the tank. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -16,6 +17,7 @@
 #include <cmocka.h>
 
 #include "diag/volume.h"
+#include "scheme/loads.h"
 #include "noise.h"
 #include <stdbool.h>
 #include "parallel/mpi_domain.h"
@@ -35,14 +37,15 @@ static int n_ranks, rank;
 #define RESOLUTION "5"
 #endif
 
-static void setup(solver *s, config *cfg, const char *model)
+#define SWAY "type = sway\namplitude = 0.05\nperiod = 0.5"
+
+static void setup(solver *s, config *cfg, const char *motion, const char *model)
 {
     char text[1024], err[1024];
     snprintf(text, sizeof text,
              "[case]\nname = split\ndim = %d\nt_end = 10\n" TANK
-             "[motion]\ntype = sway\namplitude = 0.05\nperiod = 0.5\n"
-             "[model]\n%s\n[numerics]\nresolution = " RESOLUTION "\n",
-             DIM, model);
+             "[motion]\n%s\n[model]\n%s\n[numerics]\nresolution = " RESOLUTION "\n",
+             DIM, motion, model);
     if (config_load_string(cfg, text, "split", NULL, 0, err, sizeof err)) fail_msg("%s", err);
     if (solver_init(s, cfg, err, sizeof err)) fail_msg("%s", err);
     /* off the lattice by up to 0.25 dr, the same on every process: irregular neighbourhoods
@@ -111,11 +114,12 @@ static double *gather(const particles *p, size_t *n_all)
 /* Rank 0's comparison of the gathered state with its own one-process run after one step:
  * "" when they agree to the bit, else what differs. Never leaves early: the other processes
  * are in the same collective calls. */
-/* The time series' global figures of a state: the energies, moments and extremes, and the
- * volume errors. Collective with a domain. */
+/* The global figures of a state: the time series' energies, moments and extremes and
+ * volume errors, and loads.csv's force and moment on the tank. Collective with a domain. */
 typedef struct {
     diagnostics d;
     volume_errors v;
+    tank_loads loads;
 } figures;
 
 static figures state_figures(solver *s)
@@ -124,6 +128,8 @@ static figures state_figures(solver *s)
     memset(&f, 0, sizeof f); /* the padding too: compared with memcmp */
     solver_diagnostics(s, &f.d);
     volume_compute(&s->p, s->dv.cell_volume, s->scratch, solver_reducer(s), &f.v);
+    tank_frame frame = solver_frame(s, s->t);
+    assert_int_equal(loads_compute(&s->pp, &s->p, &s->nl, &frame, solver_reducer(s), &f.loads), 0);
     return f;
 }
 
@@ -151,21 +157,22 @@ static void compare(solver *alone, const double *all, size_t n_all, double split
     if (memcmp(split_figures, &expected, sizeof expected))
         snprintf(failure, len,
                  "%s, step %d, %d processes: the global figures differ (eps_v1 %.17g vs %.17g, "
-                 "ekin %.17g vs %.17g)",
+                 "ekin %.17g vs %.17g, force_x %.17g vs %.17g)",
                  model, step, n_ranks, split_figures->v.eps_v1, expected.v.eps_v1,
-                 split_figures->d.ekin, expected.d.ekin);
+                 split_figures->d.ekin, expected.d.ekin, split_figures->loads.force[0],
+                 expected.loads.force[0]);
     if (differ || memcmp(&split_dt, &alone->dt, sizeof split_dt))
         snprintf(failure, len,
                  "%s, step %d, %d processes: %zu of %zu particles differ, dt %.17g vs %.17g", model,
                  step, n_ranks, differ, n_all, split_dt, alone->dt);
 }
 
-static void same_bits_as_one_process(const char *model)
+static void same_bits_as_one_process_moving(const char *motion, const char *model)
 {
     config cfg;
     solver alone, split;
-    if (rank == 0) setup(&alone, &cfg, model);
-    setup(&split, &cfg, model);
+    if (rank == 0) setup(&alone, &cfg, motion, model);
+    setup(&split, &cfg, motion, model);
     mpi_domain domain;
     mpi_domain_attach(&domain, &split, MPI_COMM_WORLD);
     char failure[256] = "";
@@ -185,6 +192,11 @@ static void same_bits_as_one_process(const char *model)
     solver_free(&split);
     mpi_domain_free(&domain);
     if (failure[0]) fail_msg("%s", failure);
+}
+
+static void same_bits_as_one_process(const char *model)
+{
+    same_bits_as_one_process_moving(SWAY, model);
 }
 
 static void test_delta(void **state)
@@ -232,6 +244,16 @@ static void test_surface_tension(void **state)
     same_bits_as_one_process("scheme = delta-plus-ale\n[fluid]\nsurface_tension = 0.0727");
 }
 
+/* a tank that rolls as it sways (0.2 rad about the bottom's centre): the frame's rotation,
+   its Euler and centrifugal forces and the walls' images in the turning frame, the same on
+   every process */
+static void test_roll(void **state)
+{
+    (void)state;
+    same_bits_as_one_process_moving("type = sway+roll\namplitude = 0.05\nperiod = 0.5\nangle = 0.2",
+                                    "scheme = delta-plus-ale");
+}
+
 int main(int argc, char **argv)
 {
     MPI_Init(&argc, &argv);
@@ -244,6 +266,7 @@ int main(int argc, char **argv)
         cmocka_unit_test(test_delta_plus_ale),
         cmocka_unit_test(test_delta_plus_ale_corrected),
         cmocka_unit_test(test_surface_tension),
+        cmocka_unit_test(test_roll),
     };
     int failed = cmocka_run_group_tests(tests, NULL, NULL);
     MPI_Finalize();
