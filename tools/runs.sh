@@ -3,6 +3,9 @@
 #       $threads threads: the terminal output goes to DIR/run.txt, the exit status to DIR/exit
 #       (3: breakdown), "wall user system" seconds to DIR/time.txt; THREADS, when set,
 #       overrides $threads (to run a queue on one core while the other stays free)
+#   vcsph_resume DIR                         continues the run in DIR from DIR/checkpoint.h5 (a
+#       run stopped by a signal or the end of a working session) to its t_end, with the same
+#       files as vcsph_run; the terminal output of each piece is appended to DIR/run.txt
 #   for_each_run JOBS FUNCTION RUN...        calls FUNCTION with each RUN's words, at most
 #       JOBS at a time, and says how long they took
 #   us_per_particle_step DIR                 the run's cost from DIR/log.txt, or -
@@ -13,6 +16,15 @@ vcsph_run() {
   local TIMEFORMAT='%R %U %S'
   { time OMP_NUM_THREADS=${THREADS:-$threads} "${VCSPH:-build/vcsph}" run "$@" -o "$dir" --overwrite --quiet \
       >"$dir/run.txt" 2>&1 || status=$?; } 2>"$dir/time.txt"
+  echo $status >"$dir/exit"
+  return 0
+}
+
+vcsph_resume() {
+  local dir=$1 status=0
+  local TIMEFORMAT='%R %U %S'
+  { time OMP_NUM_THREADS=${THREADS:-$threads} "${VCSPH:-build/vcsph}" run --restart "$dir/checkpoint.h5" \
+      --quiet >>"$dir/run.txt" 2>&1 || status=$?; } 2>"$dir/time.txt"
   echo $status >"$dir/exit"
   return 0
 }
