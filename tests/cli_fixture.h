@@ -68,6 +68,20 @@ static inline int run_vcsph(const fixture *fx, const char *const *args)
     return vcsph_child_run(fx->dir, args, environ);
 }
 
+/* The same with one more variable ("NAME=value") in the environment. */
+static inline int run_vcsph_with(const fixture *fx, const char *const *args, const char *variable)
+{
+    size_t n = 0;
+    while (environ[n]) n++;
+    char **envp = calloc(n + 2, sizeof *envp);
+    assert_non_null(envp);
+    memcpy(envp, environ, n * sizeof *envp);
+    envp[n] = (char *)variable;
+    int rc = vcsph_child_run(fx->dir, args, envp);
+    free(envp);
+    return rc;
+}
+
 /* The line after `line`, NULL at the end of the text. */
 static inline const char *next_line(const char *line)
 {

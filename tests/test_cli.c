@@ -139,16 +139,14 @@ static const bad_case bad_cases[] = {
 };
 #define N_BAD (sizeof bad_cases / sizeof bad_cases[0])
 
-static void test_bad_input(void **state)
+/* Bad input's answer (docs/architecture.md): exit status 2, one line on stderr holding every
+ * `expect` (up to 4, NULL-ended), nothing on stdout and nothing written but the case file. */
+static void assert_refused(fixture *fx, int rc, const char *name, const char *const *expect)
 {
-    fixture *fx = *state;
-    const bad_case *bc = fx->row;
-    write_file(fx, "bad.ini", bc->case_text);
-    int rc = run_vcsph(fx, bc->args);
     char *out = read_file(fx, "stdout.txt"), *err = read_file(fx, "stderr.txt");
-    if (rc != 2) print_error("%s: stderr:\n%s", bc->name, err);
-    assert_int_equal(rc, 2); /* docs/architecture.md: bad input exits 2 */
-    for (int k = 0; k < 4 && bc->expect[k]; k++) assert_contains(err, bc->expect[k]);
+    if (rc != 2) print_error("%s: stderr:\n%s", name, err);
+    assert_int_equal(rc, 2);
+    for (int k = 0; k < 4 && expect[k]; k++) assert_contains(err, expect[k]);
     assert_int_equal(count_lines(err), 1); /* "one clear message" */
     assert_string_equal(out, "");
     /* nothing written: no output folder, and nothing else in the working folder */
@@ -156,6 +154,32 @@ static void test_bad_input(void **state)
     assert_folder_holds(fx, (const char *const[]){"bad.ini", "stdout.txt", "stderr.txt", NULL});
     free(out);
     free(err);
+}
+
+static void test_bad_input(void **state)
+{
+    fixture *fx = *state;
+    const bad_case *bc = fx->row;
+    write_file(fx, "bad.ini", bc->case_text);
+    int rc = run_vcsph(fx, bc->args);
+    assert_refused(fx, rc, bc->name, bc->expect);
+}
+
+/* `mpirun -np P vcsph run`, P > 1, would be P whole runs into one folder: refused like bad
+ * input (docs/mpi.md), under Open MPI's launcher and under a PMI one (MPICH, Slurm) */
+static void test_mpi_launch_refused(void **state)
+{
+    fixture *fx = *state;
+    write_file(fx, "bad.ini", BASE_CASE);
+    const char *const args[] = {RUN_BAD, NULL};
+    assert_refused(
+        fx, run_vcsph_with(fx, args, "OMPI_COMM_WORLD_SIZE=2"), "mpirun",
+        (const char *const[]){"one of 2 MPI processes", "docs/mpi.md", "one process", NULL});
+    assert_refused(fx, run_vcsph_with(fx, args, "PMI_SIZE=4"), "PMI",
+                   (const char *const[]){"one of 4 MPI processes", NULL});
+    /* a launcher's single process runs */
+    const char *const alone[] = {"run", "bad.ini", "-o", "alone", "--quiet", NULL};
+    assert_int_equal(run_vcsph_with(fx, alone, "OMPI_COMM_WORLD_SIZE=1"), 0);
 }
 
 /* ---- vcsph check ---------------------------------------------------------------------------- */
@@ -397,7 +421,7 @@ static void test_breakdown_exits_3(void **state)
 
 int main(void)
 {
-    struct CMUnitTest tests[N_BAD + 3];
+    struct CMUnitTest tests[N_BAD + 4];
     for (size_t k = 0; k < N_BAD; k++)
         tests[k] = (struct CMUnitTest){bad_cases[k].name, test_bad_input, setup, teardown,
                                        (void *)&bad_cases[k]};
@@ -407,5 +431,7 @@ int main(void)
                                                                           setup, teardown);
     tests[N_BAD + 2] =
         (struct CMUnitTest)cmocka_unit_test_setup_teardown(test_breakdown_exits_3, setup, teardown);
-    return _cmocka_run_group_tests("test_cli", tests, N_BAD + 3, NULL, NULL);
+    tests[N_BAD + 3] = (struct CMUnitTest)cmocka_unit_test_setup_teardown(test_mpi_launch_refused,
+                                                                          setup, teardown);
+    return _cmocka_run_group_tests("test_cli", tests, N_BAD + 4, NULL, NULL);
 }

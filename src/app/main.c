@@ -171,6 +171,34 @@ static int restart_run(const cli_args *args)
     return status;
 }
 
+/* The number of processes an MPI launcher started this one among (Open MPI's mpirun sets
+ * OMPI_COMM_WORLD_SIZE, MPICH's and Slurm's PMI launchers PMI_SIZE), 1 when none did. */
+static long mpi_launch_size(void)
+{
+    const char *names[] = {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"};
+    for (size_t k = 0; k < sizeof names / sizeof names[0]; k++) {
+        const char *v = getenv(names[k]);
+        long n = v ? strtol(v, NULL, 10) : 0;
+        if (n > 1) return n;
+    }
+    return 1;
+}
+
+/* `vcsph run` under `mpirun -np P`, P > 1, would be P whole runs into one folder: refused
+ * before anything is written (the split run exists in the solver only, docs/mpi.md). */
+static int refuse_mpi_launch(void)
+{
+    long n = mpi_launch_size();
+    if (n == 1) return 0;
+    fprintf(stderr,
+            "vcsph: started as one of %ld MPI processes: vcsph run does not split a run among "
+            "processes yet (docs/mpi.md), and each would run the whole case into the same "
+            "folder; start it as one process, whose OpenMP threads use the cores "
+            "(OMP_NUM_THREADS)\n",
+            n);
+    return -1;
+}
+
 int main(int argc, char **argv)
 {
     hdf5_errors_quiet_exit();
@@ -194,6 +222,7 @@ int main(int argc, char **argv)
         config_write_keys(stdout);
         return RUN_OK;
     }
+    if (args.command == CLI_RUN && refuse_mpi_launch()) return RUN_BAD_INPUT;
     if (args.restart_path) return restart_run(&args);
     static config cfg;
     if (config_load(&cfg, args.case_path, args.overrides, args.n_overrides, err, sizeof err)) {

@@ -48,7 +48,7 @@ int output_folder_make(const char *dir)
     return mkdir(buf, 0777) && errno != EEXIST ? -1 : 0;
 }
 
-/* The process id written in the lock file, or 0 if it cannot be read. */
+/* The process id written in the lock file, or 0 if it cannot be read (yet). */
 static long lock_holder(int fd)
 {
     char text[32] = {0};
@@ -74,11 +74,15 @@ int output_folder_lock(const char *dir, bool *busy, char *err, size_t err_len)
     if (flock(fd, LOCK_EX | LOCK_NB)) {
         int why = errno;
         *busy = why == EWOULDBLOCK;
+        /* the holder writes its id just after it takes the lock: it may not be there yet */
+        long holder = *busy ? lock_holder(fd) : 0;
+        char who[48] = "";
+        if (holder > 0) snprintf(who, sizeof who, " (process %ld)", holder);
         if (*busy)
             snprintf(err, err_len,
-                     "%s is in use by another vcsph run (process %ld); wait for it to end or "
-                     "choose another folder with -o",
-                     dir, lock_holder(fd));
+                     "%s is in use by another vcsph run%s; wait for it to end or choose another "
+                     "folder with -o",
+                     dir, who);
         else
             snprintf(err, err_len, "cannot lock %s: %s", path, strerror(why));
         close(fd);
