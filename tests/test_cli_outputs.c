@@ -105,7 +105,8 @@ static void test_warning(void **state)
 /* `vcsph volume` on the snapshots of a run with output.graphical = true prints, for each
  * snapshot, the eps_v1 and eps_gm of the time-series row of the same time: the same
  * definitions computed from the same state (round-off of the printed digits only). eps_gm
- * is Eq. (15)'s ratio of the pixel count to the initial configuration's: exactly 0 at t = 0. */
+ * is Eq. (15)'s ratio of the pixel count to the initial configuration's: exactly 0 at t = 0.
+ * Its free-surface count is the row's too; the packing's own figures: test_volume. */
 static void test_volume_command_matches_series(void **state)
 {
     fixture *fx = *state;
@@ -125,18 +126,29 @@ static void test_volume_command_matches_series(void **state)
     assert_int_equal(table_read(&ts, path), 0);
     const double *t = table_column(&ts, "t"), *eps_v1 = table_column(&ts, "eps_v1");
     const double *eps_gm = table_column(&ts, "eps_gm");
-    assert_true(strncmp(out, "t,eps_v1,eps_gm\n", 16) == 0);
+    const double *n_free = table_column(&ts, "n_free_surface");
+    const char header[] = "t,eps_v1,eps_gm,n_free_surface,n_clumped,nearest_free,nearest_band,"
+                          "nearest_interior\n";
+    assert_true(strncmp(out, header, strlen(header)) == 0);
     assert_true(t[0] == 0.0 && eps_gm[0] == 0.0);
     int rows = 0;
     for (const char *line = next_line(out); line && *line; line = next_line(line)) {
-        double tv, e1, egm;
-        assert_int_equal(sscanf(line, "%lf,%lf,%lf", &tv, &e1, &egm), 3);
+        double tv, e1, egm, nearest[3];
+        long free_surface, clumped;
+        assert_int_equal(sscanf(line, "%lf,%lf,%lf,%ld,%ld,%lf,%lf,%lf", &tv, &e1, &egm,
+                                &free_surface, &clumped, &nearest[0], &nearest[1], &nearest[2]),
+                         8);
+        /* the packing's free surface is the run's: the same count as the time series' */
+        assert_true(clumped >= 0 && clumped <= free_surface);
+        /* the tiny case's lattice barely moves in 0.05 s: every nearest neighbour near dr */
+        for (int c = 0; c < 3; c++) assert_true(nearest[c] > 0.8 && nearest[c] < 1.2);
         size_t r = 0;
         while (r < ts.n_rows && fabs(t[r] - tv) > 1e-12) r++;
         if (r == ts.n_rows) fail_msg("no time-series row at t = %g", tv);
         assert_false(isnan(eps_gm[r]));
         assert_close(e1, eps_v1[r], 1e-12);
         assert_close(egm, eps_gm[r], 1e-12);
+        assert_close((double)free_surface, n_free[r], 0.0);
         rows++;
     }
     assert_int_equal(rows, 3);

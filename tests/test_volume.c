@@ -1,12 +1,14 @@
 /* Volume diagnostics (sec. 3, appendix; theory §4, §9) on shapes whose answer is known:
  * a lattice block at rest, a disc / ball of lattice particles, a compressed block. */
 #include "diag/freesurface.h"
+#include "diag/packing.h"
 #include "diag/volume.h"
 #include "scheme/solver.h"
 
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
+#include <math.h>
 #include <stdlib.h>
 #include <cmocka.h>
 
@@ -87,6 +89,48 @@ static void test_block_at_rest(void **state)
     assert_close(ve.eps_v2, -share * lattice_sum, 3e-4);
     assert_close(ve.eps_v3, -share * lattice_l, 3e-4);
     assert_int_equal(ve.n_free_surface, (long)n_free);
+    solver_free(&s);
+}
+
+/* The free surface's packing (diag/packing.h) on the block: every nearest neighbour at the
+ * lattice spacing, dr here (the box holds whole numbers of dr), to round-off, and nothing
+ * clumped; then one top-layer particle moved to 0.3 dr beside its neighbour along x makes
+ * exactly those two clumped (a pair closer than dr/2), and their distances pull the free
+ * surface's mean below 1 by (1 - 0.3) 2 / n_free. */
+static void test_block_packing(void **state)
+{
+    (void)state;
+    config cfg;
+    load(&cfg, block_case);
+    solver s;
+    prepare(&s, &cfg);
+    particles *p = &s.p;
+    double dr = s.dv.dr;
+    surface_packing sp;
+    surface_packing_compute(&s.pp.k, p, &s.nl, dr, s.scratch, &sp);
+    assert_int_equal(sp.n_free, (long)(p->n_fluid / (size_t)cfg.resolution));
+    assert_int_equal(sp.n_clumped, 0);
+    assert_close(sp.nearest_free, 1.0, 1e-12);
+    assert_close(sp.nearest_band, 1.0, 1e-12);
+    assert_close(sp.nearest_interior, 1.0, 1e-12);
+    /* a top-layer particle away from the walls, and its neighbour at +dr along x */
+    size_t mover = p->n_fluid, target = p->n_fluid;
+    for (size_t i = 0; i < p->n_fluid && mover == p->n_fluid; i++)
+        if (p->surface[i] == SURFACE_FREE && p->x[0][i] > 0.3 * cfg.tank_length &&
+            p->x[0][i] < 0.6 * cfg.tank_length)
+            mover = i;
+    for (size_t j = 0; j < p->n_fluid; j++) {
+        bool same_row = true;
+        for (int d = 1; d < DIM; d++) same_row &= fabs(p->x[d][j] - p->x[d][mover]) < 1e-9;
+        if (same_row && fabs(p->x[0][j] - p->x[0][mover] - dr) < 1e-9) target = j;
+    }
+    assert_true(mover < p->n_fluid && target < p->n_fluid);
+    p->x[0][mover] += 0.7 * dr;
+    assert_int_equal(solver_prepare(&s, cfg.t_end), 0);
+    surface_packing_compute(&s.pp.k, p, &s.nl, dr, s.scratch, &sp);
+    assert_int_equal(sp.n_clumped, 2);
+    /* the mover's left neighbour now has its nearest at dr still (the one below) */
+    assert_close(sp.nearest_free, 1.0 - 2.0 * 0.7 / (double)sp.n_free, 1e-12);
     solver_free(&s);
 }
 
@@ -215,6 +259,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_block_at_rest),
+        cmocka_unit_test(test_block_packing),
         cmocka_unit_test(test_disc_outer_ring),
         cmocka_unit_test(test_compressed_block),
     };

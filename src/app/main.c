@@ -68,7 +68,8 @@ static int check_case(const config *cfg, bool print)
 /* `vcsph volume`: one CSV row per snapshot, the columns of timeseries.csv. */
 static int volume_of_snapshots(char **paths, int n)
 {
-    printf("t,eps_v1,eps_gm\n");
+    printf("t,eps_v1,eps_gm,n_free_surface,n_clumped,nearest_free,nearest_band,"
+           "nearest_interior\n");
     for (int k = 0; k < n; k++) {
         char err[2048];
         snapshot_info info;
@@ -82,17 +83,19 @@ static int volume_of_snapshots(char **paths, int n)
         static config cfg;
         int status =
             config_load_string(&cfg, info.case_text, paths[k], &no_motion, 1, err, sizeof err);
-        double eps_v1 = 0.0, eps_gm = 0.0;
+        snapshot_figures f;
         if (status == 0)
             status = (info.dim == 3 ? snapshot_volume_3d : snapshot_volume_2d)(
-                &cfg, paths[k], &info, &eps_v1, &eps_gm, err, sizeof err);
+                &cfg, paths[k], &info, &f, err, sizeof err);
         double time = info.time;
         snapshot_info_free(&info);
         if (status) {
             fprintf(stderr, "vcsph: %s\n", err);
             return status;
         }
-        printf("%.10g,%.10g,%.10g\n", time, eps_v1, eps_gm);
+        const surface_packing *q = &f.packing;
+        printf("%.10g,%.10g,%.10g,%ld,%ld,%.4f,%.4f,%.4f\n", time, f.eps_v1, f.eps_gm, q->n_free,
+               q->n_clumped, q->nearest_free, q->nearest_band, q->nearest_interior);
         fflush(stdout);
     }
     return RUN_OK;

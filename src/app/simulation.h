@@ -4,6 +4,7 @@
 #define VCSPH_SIMULATION_H
 
 #include "core/config.h"
+#include "diag/packing_figures.h"
 #include <stdbool.h>
 #include <stddef.h>
 
@@ -39,11 +40,16 @@ int simulation_check_checkpoint_3d(const config *cfg, const struct checkpoint_da
                                    size_t err_len);
 
 struct snapshot_info;
-/* `vcsph volume`: eps_v1 and eps_gm of one snapshot file whose case is cfg. */
+/* `vcsph volume`: eps_v1, eps_gm and the free surface's packing of one snapshot file whose
+ * case is cfg. */
+typedef struct {
+    double eps_v1, eps_gm;
+    surface_packing packing;
+} snapshot_figures;
 int snapshot_volume_2d(const config *cfg, const char *path, const struct snapshot_info *info,
-                       double *eps_v1, double *eps_gm, char *err, size_t err_len);
+                       snapshot_figures *out, char *err, size_t err_len);
 int snapshot_volume_3d(const config *cfg, const char *path, const struct snapshot_info *info,
-                       double *eps_v1, double *eps_gm, char *err, size_t err_len);
+                       snapshot_figures *out, char *err, size_t err_len);
 
 static inline int simulation_run(const config *cfg, const run_options *opt)
 {

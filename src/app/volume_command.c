@@ -1,6 +1,8 @@
 /* volume_command: `vcsph volume SNAPSHOT...`: the volume errors of saved snapshots, with the
- * same definitions as the time-series columns (eps_v1 of Eq. 12, eps_gm of Eq. 15). */
+ * same definitions as the time-series columns (eps_v1 of Eq. 12, eps_gm of Eq. 15), and how
+ * closely the free surface's particles sit (diag/packing.h). */
 #include "app/simulation.h"
+#include "diag/packing.h"
 #include "diag/volume.h"
 #include "io/snapshot_read.h"
 #include "scheme/solver.h"
@@ -14,7 +16,7 @@
  * kernel); the snapshot's positions, velocities, densities and masses replace the lattice's;
  * solver_prepare then computes the geometry of that state as a run does. */
 int snapshot_volume_dim(const config *cfg, const char *path, const snapshot_info *info,
-                        double *eps_v1, double *eps_gm, char *err, size_t err_len)
+                        snapshot_figures *out, char *err, size_t err_len)
 {
     solver s;
     if (solver_init(&s, cfg, err, err_len)) return RUN_BAD_INPUT;
@@ -40,11 +42,12 @@ int snapshot_volume_dim(const config *cfg, const char *path, const snapshot_info
         } else {
             volume_errors ve;
             volume_compute(p, s.dv.cell_volume, s.scratch, NULL, &ve);
-            *eps_v1 = ve.eps_v1;
+            out->eps_v1 = ve.eps_v1;
+            surface_packing_compute(&s.pp.k, p, &s.nl, s.dv.dr, s.scratch, &out->packing);
             if (volume_graphical(p, s.tank.size, &s.dv, &volume, err, err_len))
                 status = RUN_FAILED;
             else
-                *eps_gm = graphical_error(volume, initial_volume);
+                out->eps_gm = graphical_error(volume, initial_volume);
         }
     }
     solver_free(&s);

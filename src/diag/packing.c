@@ -1,0 +1,49 @@
+/* packing: the free-surface particles' nearest neighbours (packing.h). */
+#include "diag/packing.h"
+#include "core/pair.h"
+#include "diag/freesurface.h"
+
+#include <math.h>
+
+/* The distance to i's nearest fluid neighbour within 2h, or 0 when it has none. */
+static double nearest_fluid_neighbour(const kernel *k, const particles *p, const neighbour_list *nl,
+                                      size_t i)
+{
+    vec xi = vec_load(p->x, i);
+    double nearest2 = INFINITY;
+    pair pr;
+    FOR_EACH_PAIR_WHERE (k, p->x, nl, i, xi, pr, pr.j < p->n_fluid)
+        if (pr.r2 < nearest2) nearest2 = pr.r2;
+    return isinf(nearest2) ? 0.0 : sqrt(nearest2);
+}
+
+/* The mean of `nearest` over the particles of class `surface` that have a neighbour, summed
+ * in index order (NaN when there are none). */
+static double class_mean(const particles *p, const double *nearest, int surface)
+{
+    double sum = 0.0;
+    long n = 0;
+    for (size_t i = 0; i < p->n_fluid; i++)
+        if (p->surface[i] == surface && nearest[i] > 0.0) {
+            sum += nearest[i];
+            n++;
+        }
+    return n ? sum / (double)n : NAN;
+}
+
+void surface_packing_compute(const kernel *k, const particles *p, const neighbour_list *nl,
+                             double dr, double *scratch, surface_packing *out)
+{
+    double *nearest = scratch;
+#pragma omp parallel for schedule(static)
+    for (size_t i = 0; i < p->n_fluid; i++) nearest[i] = nearest_fluid_neighbour(k, p, nl, i) / dr;
+    out->n_free = out->n_clumped = 0;
+    for (size_t i = 0; i < p->n_fluid; i++)
+        if (p->surface[i] == SURFACE_FREE) {
+            out->n_free++;
+            out->n_clumped += nearest[i] > 0.0 && nearest[i] < PACKING_CLUMPED;
+        }
+    out->nearest_free = class_mean(p, nearest, SURFACE_FREE);
+    out->nearest_band = class_mean(p, nearest, SURFACE_REGION);
+    out->nearest_interior = class_mean(p, nearest, SURFACE_INTERIOR);
+}
