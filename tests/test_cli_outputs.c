@@ -138,7 +138,6 @@ static void test_volume_command_matches_series(void **state)
         assert_int_equal(sscanf(line, "%lf,%lf,%lf,%ld,%ld,%lf,%lf,%lf", &tv, &e1, &egm,
                                 &free_surface, &clumped, &nearest[0], &nearest[1], &nearest[2]),
                          8);
-        /* the packing's free surface is the run's: the same count as the time series' */
         assert_true(clumped >= 0 && clumped <= free_surface);
         /* the tiny case's lattice barely moves in 0.05 s: every nearest neighbour near dr */
         for (int c = 0; c < 3; c++) assert_true(nearest[c] > 0.8 && nearest[c] < 1.2);
@@ -148,6 +147,7 @@ static void test_volume_command_matches_series(void **state)
         assert_false(isnan(eps_gm[r]));
         assert_close(e1, eps_v1[r], 1e-12);
         assert_close(egm, eps_gm[r], 1e-12);
+        /* the packing's free surface is the run's: the same count as the time series' */
         assert_close((double)free_surface, n_free[r], 0.0);
         rows++;
     }

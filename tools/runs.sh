@@ -9,25 +9,27 @@
 #   for_each_run JOBS FUNCTION RUN...        calls FUNCTION with each RUN's words, at most
 #       JOBS at a time, and says how long they took
 #   us_per_particle_step DIR                 the run's cost from DIR/log.txt, or -
-vcsph_run() {
+# vcsph run "$@" with the threads, files and exit status of vcsph_run, the terminal output
+# appended to DIR/run.txt
+vcsph_timed() {
   local dir=$1 status=0
   shift
-  mkdir -p "$dir"
   local TIMEFORMAT='%R %U %S'
-  { time OMP_NUM_THREADS=${THREADS:-$threads} "${VCSPH:-build/vcsph}" run "$@" -o "$dir" --overwrite --quiet \
-      >"$dir/run.txt" 2>&1 || status=$?; } 2>"$dir/time.txt"
+  { time OMP_NUM_THREADS=${THREADS:-$threads} "${VCSPH:-build/vcsph}" run "$@" --quiet \
+      >>"$dir/run.txt" 2>&1 || status=$?; } 2>"$dir/time.txt"
   echo $status >"$dir/exit"
   return 0
 }
 
-vcsph_resume() {
-  local dir=$1 status=0
-  local TIMEFORMAT='%R %U %S'
-  { time OMP_NUM_THREADS=${THREADS:-$threads} "${VCSPH:-build/vcsph}" run --restart "$dir/checkpoint.h5" \
-      --quiet >>"$dir/run.txt" 2>&1 || status=$?; } 2>"$dir/time.txt"
-  echo $status >"$dir/exit"
-  return 0
+vcsph_run() {
+  local dir=$1
+  shift
+  mkdir -p "$dir"
+  : >"$dir/run.txt"
+  vcsph_timed "$dir" "$@" -o "$dir" --overwrite
 }
+
+vcsph_resume() { vcsph_timed "$1" --restart "$1/checkpoint.h5"; }
 
 for_each_run() {
   local jobs=$1 function=$2 start r

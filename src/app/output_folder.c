@@ -74,17 +74,18 @@ int output_folder_lock(const char *dir, bool *busy, char *err, size_t err_len)
     if (flock(fd, LOCK_EX | LOCK_NB)) {
         int why = errno;
         *busy = why == EWOULDBLOCK;
-        /* the holder writes its id just after it takes the lock: it may not be there yet */
-        long holder = *busy ? lock_holder(fd) : 0;
-        char who[48] = "";
-        if (holder > 0) snprintf(who, sizeof who, " (process %ld)", holder);
-        if (*busy)
+        if (*busy) {
+            /* the holder writes its id just after it takes the lock: it may not be there yet */
+            long holder = lock_holder(fd);
+            char who[48] = "";
+            if (holder > 0) snprintf(who, sizeof who, " (process %ld)", holder);
             snprintf(err, err_len,
                      "%s is in use by another vcsph run%s; wait for it to end or choose another "
                      "folder with -o",
                      dir, who);
-        else
+        } else {
             snprintf(err, err_len, "cannot lock %s: %s", path, strerror(why));
+        }
         close(fd);
         return -1;
     }

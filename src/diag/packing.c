@@ -10,11 +10,11 @@ static double nearest_fluid_neighbour(const kernel *k, const particles *p, const
                                       size_t i)
 {
     vec xi = vec_load(p->x, i);
-    double nearest2 = INFINITY;
+    double nearest = INFINITY;
     pair pr;
     FOR_EACH_PAIR_WHERE (k, p->x, nl, i, xi, pr, pr.j < p->n_fluid)
-        if (pr.r2 < nearest2) nearest2 = pr.r2;
-    return isinf(nearest2) ? 0.0 : sqrt(nearest2);
+        if (pr.r < nearest) nearest = pr.r;
+    return isinf(nearest) ? 0.0 : nearest;
 }
 
 /* The mean of `nearest` over the particles of class `surface` that have a neighbour, summed
