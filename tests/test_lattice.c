@@ -50,7 +50,7 @@ static void fill(const config *cfg, derived *dv, particles *p)
     motion_free(&mo);
     if (derived_check(cfg, dv, err, sizeof err)) fail_msg("%s", err);
     assert_int_equal(particles_init(p, 0), 0);
-    assert_int_equal(lattice_fill(p, cfg, dv), 0);
+    assert_int_equal(lattice_fill(p, cfg, dv, 0, (size_t)dv->n_fluid), 0);
     assert_int_equal((long)p->n_fluid, dv->n_fluid);
     assert_int_equal(p->n_total, p->n_fluid);
 }

@@ -1,6 +1,7 @@
 /* main: the vcsph command; the only place that decides exit statuses (docs/architecture.md). */
 #include "app/cli.h"
 #include "app/plot_command.h"
+#include "core/run_team.h"
 #include "app/simulation.h"
 #include "boundary/motion.h"
 #include "core/config.h"
@@ -11,6 +12,10 @@
 #include "io/snapshot_read.h"
 #include "scheme/case_numbers.h"
 #include "scheme/estimate.h"
+
+#ifdef VCSPH_MPI
+#include "parallel/mpi_team.h"
+#endif
 
 #include <omp.h>
 #include <stdio.h>
@@ -153,8 +158,22 @@ static int checkpoint_case(const checkpoint_data *cd, const cli_args *args, conf
     return RUN_OK;
 }
 
-/* `vcsph run --restart`: the whole checkpoint is read and verified before anything else. */
-static int restart_run(const cli_args *args)
+/* What a run split among processes does not compute yet (docs/mpi.md): the probes, whose
+ * kernel sums reach the walls' images of every process's particles. Refused before anything
+ * is written. */
+static int refuse_in_split_run(const config *cfg, const run_team *team)
+{
+    if (!team || cfg->n_gauges + cfg->n_pressure_probes == 0) return RUN_OK;
+    fprintf(stderr,
+            "vcsph: %s has probes ([probes]), which a run split among MPI processes does not "
+            "compute yet (docs/mpi.md): run it as one process, or without the probes\n",
+            cfg->name);
+    return RUN_BAD_INPUT;
+}
+
+/* `vcsph run --restart`: the whole checkpoint is read and verified before anything else
+ * (by every process of a team). */
+static int restart_run(const cli_args *args, const run_team *team)
 {
     checkpoint_data cd;
     char err[2048];
@@ -164,10 +183,11 @@ static int restart_run(const cli_args *args)
     }
     static config cfg;
     int status = checkpoint_case(&cd, args, &cfg);
+    if (status == RUN_OK) status = refuse_in_split_run(&cfg, team);
     if (status == RUN_OK) {
         char dir[CONFIG_PATH_MAX];
         folder_of(args->restart_path, dir, sizeof dir);
-        run_options opt = {dir, args->quiet, false};
+        run_options opt = {dir, args->quiet, false, team};
         status = simulation_resume(&cfg, &opt, &cd);
     }
     checkpoint_data_free(&cd);
@@ -188,21 +208,23 @@ static long mpi_launch_size(void)
 }
 
 /* `vcsph run` under `mpirun -np P`, P > 1, would be P whole runs into one folder: refused
- * before anything is written (the split run exists in the solver only, docs/mpi.md). */
+ * before anything is written (the split run is vcsph-mpi's, docs/mpi.md). */
 static int refuse_mpi_launch(void)
 {
     long n = mpi_launch_size();
     if (n == 1) return 0;
     fprintf(stderr,
-            "vcsph: started as one of %ld MPI processes: vcsph run does not split a run among "
-            "processes yet (docs/mpi.md), and each would run the whole case into the same "
-            "folder; start it as one process, whose OpenMP threads use the cores "
-            "(OMP_NUM_THREADS)\n",
+            "vcsph: started as one of %ld MPI processes: this vcsph does not split a run among "
+            "processes, and each would run the whole case into the same folder; start it as "
+            "one process, whose OpenMP threads use the cores (OMP_NUM_THREADS), or split the "
+            "run with vcsph-mpi, the MPI build's command (docs/mpi.md)\n",
             n);
     return -1;
 }
 
-int main(int argc, char **argv)
+/* The vcsph command; team: the processes of `mpirun -n P vcsph-mpi` (NULL: vcsph, one
+ * process). */
+static int vcsph_main(int argc, char **argv, const run_team *team)
 {
     hdf5_errors_quiet_exit();
     cli_args args;
@@ -225,8 +247,8 @@ int main(int argc, char **argv)
         config_write_keys(stdout);
         return RUN_OK;
     }
-    if (args.command == CLI_RUN && refuse_mpi_launch()) return RUN_BAD_INPUT;
-    if (args.restart_path) return restart_run(&args);
+    if (args.command == CLI_RUN && !team && refuse_mpi_launch()) return RUN_BAD_INPUT;
+    if (args.restart_path) return restart_run(&args, team);
     static config cfg;
     if (config_load(&cfg, args.case_path, args.overrides, args.n_overrides, err, sizeof err)) {
         fprintf(stderr, "vcsph: %s\n", err);
@@ -235,6 +257,28 @@ int main(int argc, char **argv)
     /* before check, so that check --print shows the case.ini that run -o DIR writes */
     if (args.output_dir) snprintf(cfg.output_dir, sizeof cfg.output_dir, "%s", args.output_dir);
     if (args.command == CLI_CHECK) return check_case(&cfg, args.print);
-    run_options opt = {cfg.output_dir, args.quiet, args.overwrite};
+    if (refuse_in_split_run(&cfg, team)) return RUN_BAD_INPUT;
+    run_options opt = {cfg.output_dir, args.quiet, args.overwrite, team};
     return simulation_run(&cfg, &opt);
 }
+
+#ifdef VCSPH_MPI
+/* vcsph-mpi: every process runs the command; rank 0 speaks for all (the others' terminal
+ * output goes nowhere: they compute the same figures, and their statuses are agreed). Each
+ * process may run OpenMP threads, which only the main one calls MPI from. */
+int main(int argc, char **argv)
+{
+    int provided;
+    MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
+    MPI_Comm comm = MPI_COMM_WORLD;
+    run_team team;
+    mpi_team_init(&team, &comm);
+    if (team.rank > 0 && (!freopen("/dev/null", "w", stdout) || !freopen("/dev/null", "w", stderr)))
+        MPI_Abort(comm, RUN_FAILED);
+    int status = vcsph_main(argc, argv, &team);
+    MPI_Finalize();
+    return status;
+}
+#else
+int main(int argc, char **argv) { return vcsph_main(argc, argv, NULL); }
+#endif

@@ -159,7 +159,10 @@ static int sync_csv_files(run *r, int64_t sizes[RUN_N_CSV], char *err, size_t er
     return 0;
 }
 
-int restart_save(run *r, const char *path, char *err, size_t err_len)
+/* The checkpoint file of the run's state with the gathered particles `whole`, on the process
+ * that writes. */
+static int write_checkpoint(run *r, const particles *whole, const char *path, char *err,
+                            size_t err_len)
 {
     const solver *s = &r->s;
     const eta_controller *e = &s->eta_control;
@@ -170,7 +173,7 @@ int restart_save(run *r, const char *path, char *err, size_t err_len)
     double f64_values[F64_GROUPS][F64_GROUP_MAX];
     for (int g = 0; g < F64_GROUPS; g++)
         for (int k = 0; k < groups[g].n; k++) f64_values[g][k] = *groups[g].field[k];
-    const int64_t solver_i64[] = {DIM, (int64_t)s->p.n_fluid, s->step, s->n_edbc};
+    const int64_t solver_i64[] = {DIM, (int64_t)whole->n_fluid, s->step, s->n_edbc};
     const int64_t eta_i64[] = {e->switching, e->kind, e->eta0_regime, e->switches, e->n_samples};
     const int64_t run_i64[] = {r->period, r->n_snapshots, r->n_images, r->speed_warned};
     size_t n_snap = (size_t)r->n_snapshots, names_len;
@@ -203,11 +206,21 @@ int restart_save(run *r, const char *path, char *err, size_t err_len)
     add(&l, "snapshot_times", CHECKPOINT_F64, n_snap, r->snapshot_times, NULL);
     add(&l, "snapshot_counts", CHECKPOINT_I64, n_snap, counts, NULL);
     add(&l, "snapshot_files", CHECKPOINT_BYTES, names_len, names, NULL);
-    add_particles(&l, &s->p);
+    add_particles(&l, whole);
     int rc = checkpoint_write(path, l.items, l.n, err, err_len);
     free(counts);
     free(names);
     return rc;
+}
+
+int restart_save(run *r, const char *path, char *err, size_t err_len)
+{
+    particles whole;
+    run_gather(r, &r->s.p, RUN_GATHER_STATE, &whole);
+    err[0] = '\0';
+    int failed = team_writes(r->team) && write_checkpoint(r, &whole, path, err, err_len);
+    run_gathered_free(r, &whole);
+    return team_agree(r->team, failed) ? -1 : 0;
 }
 
 /* ---- loading ----------------------------------------------------------------------------- */

@@ -16,6 +16,8 @@
 
 #include <errno.h>
 #include <math.h>
+#include <stdbool.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -25,6 +27,43 @@ static const char timeseries_header[] =
     "n_free_surface,ekin,epot,eint,work_in,ediss,com_x,com_y,com_z,xmin,xmax,ymax,umax,"
     "rho_min,rho_max,esurf,work_st,deps_u,deps_du,deps_corr,angmom_x,angmom_y,angmom_z,"
     "work_moves";
+
+/* Whether run_gather brings a field of the registry (core/particles.h) for `which`. */
+static bool gathered(const run *r, uint64_t flags, const char *snapshot, run_gather_kind which)
+{
+    if (which == RUN_GATHER_STATE) return flags & FIELD_STATE;
+    if (which == RUN_GATHER_POSITIONS) return snapshot && !strcmp(snapshot, "position");
+    return snapshot && (r->s.pp.surface_tension || !(flags & FIELD_SURFACE_TENSION));
+}
+
+void run_gather(const run *r, const particles *p, run_gather_kind which, particles *whole)
+{
+    const run_team *t = r->team;
+    if (!r->split) {
+        *whole = *p;
+        return;
+    }
+    memset(whole, 0, sizeof *whole);
+    size_t n = 0;
+#define GATHER_SCALAR(type, name, flags, snapshot, comment)                                        \
+    if (gathered(r, flags, snapshot, which))                                                       \
+        whole->name = t->gather(t, p->name, p->n_fluid, sizeof *p->name, &n);
+#define GATHER_VECTOR(type, name, flags, snapshot, comment)                                        \
+    if (gathered(r, flags, snapshot, which))                                                       \
+        for (int d = 0; d < DIM; d++)                                                              \
+            whole->name[d] = t->gather(t, p->name[d], p->n_fluid, sizeof *p->name[d], &n);
+    PARTICLE_FIELDS(GATHER_SCALAR, GATHER_VECTOR)
+    whole->n_fluid = whole->n_total = whole->capacity = n;
+}
+
+void run_gathered_free(const run *r, particles *whole)
+{
+    if (!r->split) return;
+#define FREE_SCALAR(type, name, flags, snapshot, comment) free(whole->name);
+#define FREE_VECTOR(type, name, flags, snapshot, comment)                                          \
+    for (int d = 0; d < DIM; d++) free(whole->name[d]);
+    PARTICLE_FIELDS(FREE_SCALAR, FREE_VECTOR)
+}
 
 void run_out_path(const run *r, char *buf, size_t len, const char *name)
 {
@@ -41,12 +80,25 @@ void run_event(run *r, const char *what, const char *detail)
 
 /* The graphical method, Eq. (15): eps_GM of the current positions (sec. 3.2) against the
  * initial configuration's count (run_graphical_reference). */
-static int graphical_measure(run *r, double *eps_gm)
+/* The graphical method's volume of the whole liquid: on a split solver, drawn by the process
+ * that writes from the gathered positions (the others get 0 and never use it). */
+static int graphical_volume(run *r, double *volume, char *err, size_t err_len)
 {
     solver *s = &r->s;
+    particles whole;
+    run_gather(r, &s->p, RUN_GATHER_POSITIONS, &whole);
+    *volume = 0.0;
+    int failed = (!r->split || team_writes(r->team)) &&
+                 volume_graphical(&whole, s->tank.size, &s->dv, volume, err, err_len);
+    run_gathered_free(r, &whole);
+    return failed ? -1 : 0;
+}
+
+static int graphical_measure(run *r, double *eps_gm)
+{
     char err[256];
     double volume;
-    if (volume_graphical(&s->p, s->tank.size, &s->dv, &volume, err, sizeof err) == 0) {
+    if (graphical_volume(r, &volume, err, sizeof err) == 0) {
         *eps_gm = graphical_error(volume, r->graphical_volume0);
         return 0;
     }
@@ -56,9 +108,8 @@ static int graphical_measure(run *r, double *eps_gm)
 
 int run_graphical_reference(run *r, char *err, size_t err_len)
 {
-    solver *s = &r->s;
     if (!r->cfg->graphical) return 0;
-    return volume_graphical(&s->p, s->tank.size, &s->dv, &r->graphical_volume0, err, err_len);
+    return graphical_volume(r, &r->graphical_volume0, err, err_len);
 }
 
 /* The energy the liquid stores in its motion, its height and its compression (theory §10). */
@@ -151,7 +202,7 @@ void run_write_series_row(run *r, int with_geometry)
     csv_put(c, s->t);
     csv_put_long(c, s->step);
     csv_put(c, s->last_dt);
-    csv_put_long(c, (long)s->p.n_fluid);
+    csv_put_long(c, reducer_total(solver_reducer(s), (long)s->p.n_fluid));
     if (with_geometry) {
         csv_put(c, ve.eps_v1);
         csv_put(c, ve.eps_v2);
@@ -230,9 +281,8 @@ enum { SNAPSHOT_FIELDS_MAX = 0 PARTICLE_FIELDS(COUNT_FIELD, COUNT_FIELD) };
 
 /* The fields of docs/outputs.md: those of the registry with a snapshot name (core/particles.h),
  * in its order; lambda, surface and eps_vi from the geometry of this step. */
-static int snapshot_fields(solver *s, snapshot_field *f)
+static int snapshot_fields(const solver *s, const particles *p, snapshot_field *f)
 {
-    particles *p = &s->p;
     int n = 0;
 #define WRITTEN(flags, snapshot)                                                                   \
     ((snapshot) != NULL && (s->pp.surface_tension || !((flags)&FIELD_SURFACE_TENSION)))
@@ -279,29 +329,50 @@ static int write_xdmf(run *r, const snapshot_field *fields, int n_fields)
     return 0;
 }
 
-int run_write_snapshot(run *r)
+/* eps_Vi of every fluid particle: the only field computed for the snapshots and images */
+static void local_volume_errors(solver *s)
 {
-    solver *s = &r->s;
-    if (run_reserve_snapshots(r, r->n_snapshots + 1)) return -1;
-    char name[64], path[CONFIG_PATH_MAX + 96], err[512];
-    snapshot_name(r->n_snapshots, name, sizeof name);
-    run_out_path(r, path, sizeof path, name);
-    for (size_t i = 0; i < s->p.n_fluid; i++) /* the only field computed for the snapshots */
+    for (size_t i = 0; i < s->p.n_fluid; i++)
         s->p.eps_vi[i] = volume_local_error(&s->p, i, s->dv.cell_volume);
+}
+
+/* The file of snapshot k (the next one) from the gathered fields, and the XDMF index that
+ * lists it; on the process that writes. */
+static int write_snapshot_file(run *r, const particles *whole, int k)
+{
+    const solver *s = &r->s;
+    char path[CONFIG_PATH_MAX + 96], err[512];
+    run_out_path(r, path, sizeof path, r->snapshot_files[k]);
     snapshot_field fields[SNAPSHOT_FIELDS_MAX];
-    int n_fields = snapshot_fields(s, fields);
+    int n_fields = snapshot_fields(s, whole, fields);
     snapshot_attrs attrs = {s->t,     s->step, s->eta_control.eta, DIM,
                             s->dv.dr, s->dv.h, r->case_text};
-    if (snapshot_write(path, s->p.n_fluid, fields, n_fields, &attrs, err, sizeof err)) {
+    if (snapshot_write(path, whole->n_fluid, fields, n_fields, &attrs, err, sizeof err)) {
         log_error("vcsph: %s", err);
         return -1;
     }
-    int k = r->n_snapshots++;
-    r->snapshot_files[k] = strdup(name);
-    r->snapshot_times[k] = s->t;
-    r->snapshot_counts[k] = s->p.n_fluid;
-    if (!r->snapshot_files[k]) return -1;
     return write_xdmf(r, fields, n_fields);
+}
+
+int run_write_snapshot(run *r)
+{
+    solver *s = &r->s;
+    local_volume_errors(s);
+    particles whole;
+    run_gather(r, &s->p, RUN_GATHER_SNAPSHOT, &whole);
+    char name[64];
+    snapshot_name(r->n_snapshots, name, sizeof name);
+    int k = r->n_snapshots, failed = run_reserve_snapshots(r, k + 1);
+    if (!failed) {
+        r->n_snapshots++;
+        r->snapshot_files[k] = strdup(name);
+        r->snapshot_times[k] = s->t;
+        r->snapshot_counts[k] = whole.n_fluid;
+        failed =
+            !r->snapshot_files[k] || (team_writes(r->team) && write_snapshot_file(r, &whole, k));
+    }
+    run_gathered_free(r, &whole);
+    return team_agree(r->team, failed) ? -1 : 0;
 }
 
 /* A restarted run's snapshots.xmf lists the snapshots of the checkpoint, not those written
@@ -310,7 +381,7 @@ static int rewind_xdmf(run *r)
 {
     if (r->n_snapshots > 0) {
         snapshot_field fields[SNAPSHOT_FIELDS_MAX];
-        return write_xdmf(r, fields, snapshot_fields(&r->s, fields));
+        return write_xdmf(r, fields, snapshot_fields(&r->s, &r->s.p, fields));
     }
     char path[CONFIG_PATH_MAX + 96];
     run_out_path(r, path, sizeof path, "snapshots.xmf");
@@ -324,10 +395,10 @@ static int rewind_xdmf(run *r)
 #define IMAGE_PIXELS    800  /* the tank's width in the image */
 #define IMAGE_EPS_RANGE 0.02 /* colours span eps_Vi in [-2 %, +2 %] */
 
-int run_write_image(run *r)
+/* The image of the gathered particles (their eps_Vi computed), on the process that writes. */
+static int write_image_file(run *r, const particles *p)
 {
-    solver *s = &r->s;
-    const particles *p = &s->p;
+    const solver *s = &r->s;
     size_t n = p->n_fluid, kept = 0;
     double *buf = malloc(3 * (n ? n : 1) * sizeof *buf);
     if (!buf) return -1;
@@ -338,7 +409,7 @@ int run_write_image(run *r)
 #endif
         x[kept] = p->x[0][i];
         y[kept] = p->x[1][i];
-        value[kept++] = volume_local_error(p, i, s->dv.cell_volume);
+        value[kept++] = p->eps_vi[i];
     }
     char title[CONFIG_NAME_MAX + 32], name[64], path[CONFIG_PATH_MAX + 96], err[512];
     snprintf(title, sizeof title, "%s%s", r->cfg->name, DIM == 3 ? " (mid-width)" : "");
@@ -359,10 +430,18 @@ int run_write_image(run *r)
     run_out_path(r, path, sizeof path, name);
     int status = image_write_particles(path, &f, IMAGE_PIXELS, err, sizeof err);
     free(buf);
-    if (status) {
-        log_error("vcsph: %s", err);
-        return -1;
-    }
+    if (status) log_error("vcsph: %s", err);
+    return status ? -1 : 0;
+}
+
+int run_write_image(run *r)
+{
+    local_volume_errors(&r->s);
+    particles whole;
+    run_gather(r, &r->s.p, RUN_GATHER_SNAPSHOT, &whole);
+    int failed = team_writes(r->team) && write_image_file(r, &whole);
+    run_gathered_free(r, &whole);
+    if (team_agree(r->team, failed)) return -1;
     r->n_images++;
     return 0;
 }

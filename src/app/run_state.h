@@ -5,6 +5,7 @@
 #define VCSPH_RUN_STATE_H
 
 #include "app/progress.h"
+#include "core/run_team.h"
 #include "app/threads.h"
 #include "app/simulation.h"
 #include "diag/probes.h"
@@ -30,8 +31,10 @@ typedef struct {
     solver s;
     const config *cfg;
     const run_options *opt;
-    int lock_fd;     /* the output folder's lock (output_folder.h), -1 until taken */
-    char *case_text; /* resolved case.ini, also stored in every snapshot and checkpoint */
+    const run_team *team; /* the processes of an MPI run (run_team.h), NULL: one process */
+    void *split;          /* the team's split of s (run_team.h), NULL: none */
+    int lock_fd;          /* the output folder's lock (output_folder.h), -1 until taken */
+    char *case_text;      /* resolved case.ini, also stored in every snapshot and checkpoint */
     csv_file timeseries, events, probes_csv, dissipation, loads;
     probes probes;
     double energy0; /* ekin + epot + eint at t = 0 */
@@ -101,14 +104,27 @@ static inline double run_period_end(const run *r) { return (double)r->period * r
 #define run_write_snapshot        DIM_NAME(run_write_snapshot)
 #define run_write_image           DIM_NAME(run_write_image)
 #define run_graphical_reference   DIM_NAME(run_graphical_reference)
+#define run_gather                DIM_NAME(run_gather)
+#define run_gathered_free         DIM_NAME(run_gathered_free)
 
 /* ---- run_outputs.c: the files of a run ---- */
+
+/* What run_gather brings together: the positions; the fields of a snapshot (docs/outputs.md);
+ * the state a checkpoint keeps (FIELD_STATE). */
+typedef enum { RUN_GATHER_POSITIONS, RUN_GATHER_SNAPSHOT, RUN_GATHER_STATE } run_gather_kind;
+
+/* The fluid's fields of `which`, in the global order, on the process that writes the files
+ * (run_team.h): with the solver split among a team, *whole holds copies of them gathered from
+ * every process (on the other processes no arrays, the count alone); unsplit, *whole is p
+ * itself. Collective. */
+void run_gather(const run *r, const particles *p, run_gather_kind which, particles *whole);
+void run_gathered_free(const run *r, particles *whole);
 
 /* OUTDIR/name into buf. */
 void run_out_path(const run *r, char *buf, size_t len, const char *name);
 /* With output.graphical, the graphical method's volume of the particles as solver_init laid
- * them, the reference of every eps_gm (also on a restart, which rebuilds that lattice first).
- * Returns 0, or -1 with a message in err. */
+ * them, the reference of every eps_gm (also on a restart, which rebuilds that lattice first;
+ * collective on a split solver). Returns 0, or -1 with a message in err. */
 int run_graphical_reference(run *r, char *err, size_t err_len);
 /* A row of events.csv at the current time. */
 void run_event(run *r, const char *what, const char *detail);
@@ -139,7 +155,9 @@ int run_reserve_snapshots(run *r, int n);
 
 /* Writes the state just after a step (before the next solver_prepare) to `path` atomically
  * (checkpoint.h; the layout is in restart.c). The CSV files are synced first, so that the
- * sizes the checkpoint records are on the disk. Returns 0, or -1 with a message. */
+ * sizes the checkpoint records are on the disk. With a team, the particles are gathered in
+ * their global order and the process that writes writes the file (collective). Returns 0, or
+ * -1 with a message (on the process that writes). */
 int restart_save(run *r, const char *path, char *err, size_t err_len);
 
 /* Takes a run's state from a checkpoint read whole (checkpoint_read) into r, set up by

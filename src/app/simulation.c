@@ -45,6 +45,7 @@ static void close_run(run *r)
     free(r->snapshot_times);
     free(r->snapshot_counts);
     free(r->case_text);
+    if (r->split) r->team->unsplit(DIM, r->split);
     solver_free(&r->s);
     log_close();
     output_folder_release(r->lock_fd);
@@ -109,8 +110,11 @@ static int outputs_due(run *r, int last)
 /* Stops the run on a breakdown (docs/architecture.md): message, event, a last row and snapshot. */
 static int breakdown(run *r)
 {
-    char msg[512];
-    if (!solver_health(&r->s, msg, sizeof msg)) return 0;
+    char msg[512] = "";
+    int bad = solver_health(&r->s, msg, sizeof msg);
+    /* with a team: the diagnosis of the lowest rank, whose first bad particle comes first in
+       the global order */
+    if (!team_first_message(r->team, bad, msg, sizeof msg)) return 0;
     progress_clear(&r->pr);
     log_error("vcsph: %s", msg);
     run_event(r, "breakdown", msg);
@@ -124,16 +128,22 @@ static int breakdown(run *r)
 static int prepare(run *r)
 {
     r->t_stop = step_stop(r);
-    if (solver_prepare(&r->s, r->t_stop) == 0) return 0;
+    if (!team_agree(r->team, solver_prepare(&r->s, r->t_stop) != 0)) return 0;
     progress_clear(&r->pr);
-    log_error("vcsph: out of memory at step %ld (or more than 2^31 - 1 particles with the "
-              "ghosts)",
-              r->s.step);
+    if (r->team)
+        log_error("vcsph: out of memory at step %ld, or the liquid cannot be split among %d "
+                  "processes: each takes whole strips of 16 cells along x, and there are fewer "
+                  "strips (docs/mpi.md); run on fewer processes",
+                  r->s.step, r->team->size);
+    else
+        log_error("vcsph: out of memory at step %ld (or more than 2^31 - 1 particles with the "
+                  "ghosts)",
+                  r->s.step);
     return -1;
 }
 
 /* A CSV row that did not reach its file (a full disk) stops the run with the system's reason:
- * going on would leave a record with a hole in it. */
+ * going on would leave a record with a hole in it. Only the process that writes knows. */
 static int rows_lost(run *r)
 {
     for (int k = 0; k < RUN_N_CSV; k++) {
@@ -145,6 +155,13 @@ static int rows_lost(run *r)
         return 1;
     }
     return 0;
+}
+
+/* The outputs due now, and whether every process can go on: none failed to write. */
+static int outputs_failed(run *r, int last)
+{
+    int failed = outputs_due(r, last) != 0;
+    return team_agree(r->team, rows_lost(r) || failed);
 }
 
 /* The rest of a step once its RK4 stages are done: the next step's neighbours and geometry
@@ -161,9 +178,18 @@ static int finish_step(run *r)
     if (prepare(r)) return RUN_FAILED;
     control_step(r);
     int last = r->s.t >= r->cfg->t_end;
-    if (outputs_due(r, last) || rows_lost(r)) return RUN_FAILED;
+    if (outputs_failed(r, last)) return RUN_FAILED;
     progress_update(&r->pr, r->s.t, r->s.step, last);
     return RUN_OK;
+}
+
+/* The command that continues this run: the same processes' (any number of them would do). */
+static void run_command(const run *r, char *buf, size_t len)
+{
+    if (r->team)
+        snprintf(buf, len, "mpirun -n %d vcsph-mpi run", r->team->size);
+    else
+        snprintf(buf, len, "vcsph run");
 }
 
 static const char *signal_name(int sig)
@@ -179,10 +205,13 @@ static const char *signal_name(int sig)
 static int checkpoint_due(run *r)
 {
     const config *cfg = r->cfg;
-    int sig = interrupt_signal();
+    /* with a team: a signal to any process (mpirun forwards it to all) and the clock of the
+       process that writes */
+    int sig = team_agree(r->team, interrupt_signal());
     bool at_end = r->s.t >= cfg->t_end;
     if (!sig && !at_end &&
-        !(cfg->checkpoint_every > 0.0 && progress_wall_time() >= r->next_checkpoint))
+        !team_agree(r->team, team_writes(r->team) && cfg->checkpoint_every > 0.0 &&
+                                 progress_wall_time() >= r->next_checkpoint))
         return RUN_OK;
     char path[CONFIG_PATH_MAX + 64], err[1024];
     run_out_path(r, path, sizeof path, "checkpoint.h5");
@@ -197,9 +226,11 @@ static int checkpoint_due(run *r)
     }
     if (!sig) return RUN_OK;
     progress_clear(&r->pr);
+    char command[64];
+    run_command(r, command, sizeof command);
     log_info("vcsph: stopped by %s at t = %.9g s, step %ld; state saved in %s; continue with: "
-             "vcsph run --restart %s",
-             signal_name(sig), r->s.t, r->s.step, path, path);
+             "%s --restart %s",
+             signal_name(sig), r->s.t, r->s.step, path, command, path);
     return RUN_INTERRUPTED;
 }
 
@@ -209,7 +240,8 @@ static int time_loop(run *r)
     const config *cfg = r->cfg;
     char msg[512];
     int status;
-    progress_start(&r->pr, s->t, cfg->t_end, s->p.n_fluid, s->step, r->opt->quiet);
+    progress_start(&r->pr, s->t, cfg->t_end, s->dv.n_fluid, s->step,
+                   r->opt->quiet || !team_writes(r->team));
     r->next_checkpoint = progress_wall_time() + cfg->checkpoint_every;
     thread_tuner_start(&r->threads, progress_wall_time(), threads_run_delay(), s->step);
     if (r->resumed) {
@@ -219,7 +251,7 @@ static int time_loop(run *r)
         if (breakdown(r)) return RUN_BREAKDOWN;
         if (prepare(r)) return RUN_FAILED;
         control_step(r);
-        if (outputs_due(r, 0) || rows_lost(r)) return RUN_FAILED;
+        if (outputs_failed(r, 0)) return RUN_FAILED;
     }
     while (s->t < cfg->t_end) {
         solver_advance(s, r->t_stop);
@@ -284,27 +316,43 @@ static void log_start(const run *r)
     log_info("vcsph: output in %s", r->opt->output_dir);
 }
 
+/* The solver split among the run's team, each process keeping its share (docs/mpi.md). */
+static int split_solver(run *r, char *err, size_t err_len)
+{
+    if ((r->split = r->team->split(r->team, DIM, &r->s))) return RUN_OK;
+    snprintf(err, err_len, "out of memory splitting the liquid among the processes");
+    return RUN_FAILED;
+}
+
 /* The solver of cfg, and the state of checkpoint cd loaded into it unless cd is NULL. Touches
- * no file. Returns RUN_OK, solver_init's status, or RUN_BAD_INPUT for a checkpoint that does
- * not fit, with a message in err; close_run(r) in every case. */
-static int set_up_run(run *r, const config *cfg, const checkpoint_data *cd, char *err,
-                      size_t err_len)
+ * no file. With a team, split among its processes: a fresh run's process sets up its share of
+ * the lattice alone, a restarted one reads the whole checkpoint and then keeps its share.
+ * Returns RUN_OK, solver_init's status, or RUN_BAD_INPUT for a checkpoint that does not fit,
+ * with a message in err, the same on every process; close_run(r) in every case. */
+static int set_up_run(run *r, const config *cfg, const run_team *team, const checkpoint_data *cd,
+                      char *err, size_t err_len)
 {
     memset(r, 0, sizeof *r);
     r->lock_fd = -1;
     r->cfg = cfg;
-    int status = solver_init(&r->s, cfg, err, err_len);
-    if (status) return status;
-    if (run_graphical_reference(r, err, err_len)) return RUN_FAILED;
-    if (!cd) return RUN_OK;
-    return restart_load(r, cd, err, err_len) ? RUN_BAD_INPUT : RUN_OK;
+    r->team = team;
+    bool share = team && !cd;
+    int status =
+        solver_init_part(&r->s, cfg, share ? team->rank : 0, share ? team->size : 1, err, err_len);
+    if (status == RUN_OK && share) status = split_solver(r, err, err_len);
+    if ((status = team_agree(team, status))) return status;
+    /* the initial lattice's raster, before a checkpoint's state replaces it */
+    if (run_graphical_reference(r, err, err_len)) status = RUN_FAILED;
+    if (status == RUN_OK && cd && restart_load(r, cd, err, err_len)) status = RUN_BAD_INPUT;
+    if (status == RUN_OK && cd && team) status = split_solver(r, err, err_len);
+    return team_agree(team, status);
 }
 
 int simulation_check_checkpoint_dim(const config *cfg, const checkpoint_data *cd, char *err,
                                     size_t err_len)
 {
     run r;
-    int status = set_up_run(&r, cfg, cd, err, err_len);
+    int status = set_up_run(&r, cfg, NULL, cd, err, err_len);
     close_run(&r);
     return status;
 }
@@ -353,25 +401,35 @@ static char *motion_table_text(const config *cfg, const checkpoint_data *cd, cha
     return text;
 }
 
-/* A run from t = 0 (cd NULL) or from a checkpoint, of cfg (the run's own copy: it points
- * motion.file at the folder's copy of the table). */
-static int run_case_with(config *cfg, const run_options *opt, const checkpoint_data *cd)
+/* The output folder for this run, checked against a checkpoint cd, with the motion table's
+ * copy; on the process that writes. Returns RUN_OK or the status, with a message in err. */
+static int claim_files(run *r, config *cfg, const checkpoint_data *cd, char *err, size_t err_len)
 {
-    log_set_quiet(opt->quiet);
-    run r;
-    char err[CONFIG_PATH_MAX + 1024];
     const char *table = cfg->motion_table;
-    int status = set_up_run(&r, cfg, cd, err, sizeof err);
-    r.opt = opt;
-    if (status == RUN_OK) status = claim_output_folder(&r, cd == NULL, err, sizeof err);
+    int status = claim_output_folder(r, cd == NULL, err, err_len);
     /* a checkpoint that does not fit is refused before any file is touched (docs/architecture.md)
      */
-    if (status == RUN_OK && cd && restart_check_outputs(&r, err, sizeof err))
-        status = RUN_BAD_INPUT;
+    if (status == RUN_OK && cd && restart_check_outputs(r, err, err_len)) status = RUN_BAD_INPUT;
     if (status == RUN_OK && table &&
-        motion_table_store(opt->output_dir, table, cfg->motion_file, sizeof cfg->motion_file, err,
-                           sizeof err))
+        motion_table_store(r->opt->output_dir, table, cfg->motion_file, sizeof cfg->motion_file,
+                           err, err_len))
         status = RUN_FAILED;
+    return status;
+}
+
+/* A run from t = 0 (cd NULL) or from a checkpoint, of cfg (the run's own copy: it points
+ * motion.file at the folder's copy of the table). With a team, every process runs it and the
+ * one that writes holds the folder. */
+static int run_case_with(config *cfg, const run_options *opt, const checkpoint_data *cd)
+{
+    const run_team *team = opt->team;
+    log_set_quiet(opt->quiet || !team_writes(team));
+    run r;
+    char err[CONFIG_PATH_MAX + 1024] = "";
+    int status = set_up_run(&r, cfg, team, cd, err, sizeof err);
+    r.opt = opt;
+    if (status == RUN_OK && team_writes(team)) status = claim_files(&r, cfg, cd, err, sizeof err);
+    status = team_agree(team, status);
     if (status) {
         if (cd)
             log_error("vcsph: cannot restart from the checkpoint in %s: %s", opt->output_dir, err);
@@ -381,7 +439,7 @@ static int run_case_with(config *cfg, const run_options *opt, const checkpoint_d
         return status;
     }
     r.case_text = config_text(cfg);
-    if (!r.case_text || run_open_outputs(&r)) {
+    if (team_agree(team, !r.case_text || (team_writes(team) && run_open_outputs(&r)))) {
         log_error("vcsph: cannot write the outputs in %s: %s", opt->output_dir, strerror(errno));
         close_run(&r);
         return RUN_FAILED;
@@ -396,15 +454,17 @@ static int run_case_with(config *cfg, const run_options *opt, const checkpoint_d
     status = time_loop(&r);
     thread_tuner_stop(&r.threads);
     interrupt_restore();
-    log_summary(opt->output_dir);
+    if (team_writes(team)) log_summary(opt->output_dir);
     /* the steps of this invocation: a restarted run counts from its checkpoint */
     double wall = progress_wall_time() - wall0;
     long steps = r.s.step - step0;
+    char command[64];
+    run_command(&r, command, sizeof command);
     if (status == RUN_OK)
         log_info("vcsph: done: %ld steps in %.1f s (%.3g particle-steps/s); output in %s; "
-                 "extend with: vcsph run --restart %s --set case.t_end=LATER",
-                 steps, wall, wall > 0 ? (double)steps * (double)r.s.p.n_fluid / wall : 0.0,
-                 opt->output_dir, checkpoint);
+                 "extend with: %s --restart %s --set case.t_end=LATER",
+                 steps, wall, wall > 0 ? (double)steps * (double)r.s.dv.n_fluid / wall : 0.0,
+                 opt->output_dir, command, checkpoint);
     close_run(&r);
     return status;
 }

@@ -12,6 +12,7 @@ typedef struct {
     const char *output_dir; /* created if missing; locked while the run writes there */
     bool quiet;             /* no terminal output (tests) */
     bool overwrite; /* a fresh run removes an earlier run's files there instead of refusing */
+    const struct run_team *team; /* the processes of an MPI run (core/run_team.h), NULL: one */
 } run_options;
 
 /* Exit statuses (docs/architecture.md). RUN_INTERRUPTED: SIGTERM or SIGINT stopped the run after a

@@ -2,10 +2,10 @@
 #include "boundary/lattice.h"
 #include "physics/eos.h"
 
-int lattice_fill(particles *p, const config *cfg, const derived *dv)
+int lattice_fill(particles *p, const config *cfg, const derived *dv, size_t first, size_t end)
 {
-    size_t n = (size_t)dv->n_fluid;
-    if (particles_reserve(p, n + n / 2 + 64)) return -1;
+    size_t n = (size_t)dv->n_fluid, kept = 0;
+    if (first > end || end > n || particles_reserve(p, (end - first) * 3 / 2 + 64)) return -1;
     double cell_volume = dv->cell_volume;
     /* the hydrostatic pressure below the top of the liquid box, whatever its shape (with
        gravity 0, the droplet tests, it is 0) */
@@ -18,19 +18,20 @@ int lattice_fill(particles *p, const config *cfg, const derived *dv)
                 /* the predicate derived_compute counted n_fluid with */
                 if (!derived_lattice_point(cfg, dv, c0, c1, c2, x)) continue;
                 if (i == n) return -1; /* cannot happen: the count is the same loop */
+                if (i++ < first || i > end) continue;
+                size_t k = kept++;
                 for (int d = 0; d < DIM; d++) {
-                    p->x[d][i] = x[d];
-                    p->u[d][i] = 0.0;
+                    p->x[d][k] = x[d];
+                    p->u[d][k] = 0.0;
                 }
-                double pressure = cfg->density * cfg->gravity * (surface - p->x[1][i]);
-                p->rho[i] = eos_density(pressure, cfg->density, dv->c0);
-                p->p[i] = pressure;
-                p->m[i] = p->rho[i] * cell_volume;
-                p->vol[i] = p->m[i] / p->rho[i];
-                p->id[i] = (int64_t)i;
-                i++;
+                double pressure = cfg->density * cfg->gravity * (surface - p->x[1][k]);
+                p->rho[k] = eos_density(pressure, cfg->density, dv->c0);
+                p->p[k] = pressure;
+                p->m[k] = p->rho[k] * cell_volume;
+                p->vol[k] = p->m[k] / p->rho[k];
+                p->id[k] = (int64_t)(i - 1);
             }
     if (i != n) return -1;
-    p->n_fluid = p->n_total = n;
+    p->n_fluid = p->n_total = kept;
     return 0;
 }

@@ -14,6 +14,15 @@
  * the block sums from 0 in order (a single block: its sum). The grouping depends on n only,
  * never on the thread count. */
 double reduce_sum(const double *a, size_t n);
+/* Part `part` of `parts` of n items in their order, [first, end): the parts in order are the
+ * whole, their sizes differ by at most one. What each process of an MPI run keeps of the
+ * initial liquid. */
+static inline void reduce_share(size_t n, int part, int parts, size_t *first, size_t *end)
+{
+    *first = n * (size_t)part / (size_t)parts;
+    *end = n * (size_t)(part + 1) / (size_t)parts;
+}
+
 /* Largest of a[0..n) (-inf when n = 0); exact in any order. */
 double reduce_max(const double *a, size_t n);
 double reduce_min(const double *a, size_t n);

@@ -107,28 +107,30 @@ void csv_close(csv_file *c)
     c->f = NULL;
 }
 
-static void separator(csv_file *c)
+/* Whether the file is open, after the separator of a new field. A file that is not open (the
+ * processes of an MPI run other than rank 0, which writes) takes no rows. */
+static bool separator(csv_file *c)
 {
+    if (!c->f) return false;
     if (c->column++ > 0) fputc(',', c->f);
+    return true;
 }
 
 void csv_put(csv_file *c, double value)
 {
-    separator(c);
-    fprintf(c->f, "%.10g", value);
+    if (separator(c)) fprintf(c->f, "%.10g", value);
 }
 
 void csv_put_long(csv_file *c, long value)
 {
-    separator(c);
-    fprintf(c->f, "%ld", value);
+    if (separator(c)) fprintf(c->f, "%ld", value);
 }
 
 void csv_put_empty(csv_file *c) { separator(c); }
 
 void csv_put_text(csv_file *c, const char *text)
 {
-    separator(c);
+    if (!separator(c)) return;
     if (!strpbrk(text, ",\"\n")) {
         fputs(text, c->f);
         return;
@@ -143,6 +145,7 @@ void csv_put_text(csv_file *c, const char *text)
 
 void csv_end_row(csv_file *c)
 {
+    if (!c->f) return;
     fputc('\n', c->f);
     if ((fflush(c->f) || ferror(c->f)) && !c->error) c->error = errno ? errno : EIO;
     c->column = 0;

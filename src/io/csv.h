@@ -26,6 +26,8 @@ void csv_close(csv_file *c);
 long long csv_size(const csv_file *c);
 /* fsync: the rows so far reach the disk (before a checkpoint records csv_size). 0 or -1. */
 int csv_sync(csv_file *c);
+/* The writers of a row; on a file that is not open (f NULL: another process writes it) they
+ * do nothing. */
 void csv_put(csv_file *c, double value); /* %.10g */
 void csv_put_long(csv_file *c, long value);
 void csv_put_empty(csv_file *c);                  /* a quantity not computed in this run */

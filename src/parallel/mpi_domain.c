@@ -3,6 +3,7 @@
 #include "parallel/mpi_bodies.h"
 #include "parallel/mpi_reduce.h"
 
+#include <stdlib.h>
 #include <string.h>
 
 static mpi_domain *of(const solver_domain *hooks) { return (mpi_domain *)hooks->context; }
@@ -59,13 +60,17 @@ void mpi_domain_attach(mpi_domain *d, solver *s, MPI_Comm comm)
     int rank, ranks;
     MPI_Comm_rank(comm, &rank);
     MPI_Comm_size(comm, &ranks);
-    /* a contiguous share of the order: the shares in rank order are the global order */
+    /* a contiguous share of the order: the shares in rank order are the global order. A
+       process that set up the whole liquid keeps its share of it; one that set up its share
+       alone (solver_init_part) keeps that. */
     particles *p = &s->p;
-    size_t n = p->n_fluid, first = n * (size_t)rank / (size_t)ranks,
-           end = n * (size_t)(rank + 1) / (size_t)ranks;
-    for (size_t k = 0; k < end - first; k++) s->order[k] = first + k;
-    p->n_fluid = end - first;
-    particles_permute_fluid(p, s->order, s->scratch);
+    size_t n = p->n_fluid, first, end;
+    if (ranks > 1 && n == (size_t)s->dv.n_fluid) {
+        reduce_share(n, rank, ranks, &first, &end);
+        for (size_t k = 0; k < end - first; k++) s->order[k] = first + k;
+        p->n_fluid = end - first;
+        particles_permute_fluid(p, s->order, s->scratch);
+    }
     p->n_total = p->n_fluid;
     s->domain = &d->hooks;
 }
@@ -74,4 +79,18 @@ void mpi_domain_free(mpi_domain *d)
 {
     slabs_free(&d->slabs);
     halo_free(&d->halo);
+}
+
+void *mpi_domain_split(void *s, MPI_Comm comm)
+{
+    mpi_domain *d = malloc(sizeof *d);
+    if (d) mpi_domain_attach(d, s, comm);
+    return d;
+}
+
+void mpi_domain_unsplit(void *d)
+{
+    if (!d) return;
+    mpi_domain_free(d);
+    free(d);
 }

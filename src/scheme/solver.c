@@ -9,6 +9,7 @@
 #include "scheme/models.h"
 #include "scheme/volume_correction.h"
 
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -72,6 +73,11 @@ int solver_reserve(solver *s, size_t n_fluid)
 
 int solver_init(solver *s, const config *cfg, char *err, size_t err_len)
 {
+    return solver_init_part(s, cfg, 0, 1, err, err_len);
+}
+
+int solver_init_part(solver *s, const config *cfg, int part, int parts, char *err, size_t err_len)
+{
     memset(s, 0, sizeof *s);
     s->cfg = cfg;
     int status = motion_init(&s->mo, cfg, err, err_len);
@@ -84,7 +90,9 @@ int solver_init(solver *s, const config *cfg, char *err, size_t err_len)
     double size[3] = {cfg->tank_length, cfg->tank_height, cfg->tank_width};
     s->tank = tank_box(size, cfg->wall);
     physics_setup(s);
-    if (particles_init(&s->p, 0) || lattice_fill(&s->p, cfg, &s->dv) ||
+    size_t first, end;
+    reduce_share((size_t)s->dv.n_fluid, part, parts, &first, &end);
+    if (particles_init(&s->p, 0) || lattice_fill(&s->p, cfg, &s->dv, first, end) ||
         solver_reserve(s, s->p.n_fluid)) {
         snprintf(err, err_len, "out of memory for %ld particles", s->dv.n_fluid);
         solver_free(s);

@@ -97,6 +97,7 @@ static inline double solver_max(const solver *s, const double *a, size_t n)
 }
 
 #define solver_init        DIM_NAME(solver_init)
+#define solver_init_part   DIM_NAME(solver_init_part)
 #define solver_reserve     DIM_NAME(solver_reserve)
 #define solver_free        DIM_NAME(solver_free)
 #define solver_step        DIM_NAME(solver_step)
@@ -110,6 +111,9 @@ static inline double solver_max(const solver *s, const double *a, size_t n)
 /* Particles on a lattice filling the liquid box with the hydrostatic state (sec. 2.1).
  * Returns 0, or 2 with a message. */
 int solver_init(solver *s, const config *cfg, char *err, size_t err_len);
+/* solver_init with only part `part` of `parts` of the lattice order (reduce_share): a
+ * process's share of the liquid in an MPI run, which never holds the whole (docs/mpi.md). */
+int solver_init_part(solver *s, const config *cfg, int part, int parts, char *err, size_t err_len);
 void solver_free(solver *s);
 /* Room in the work arrays for n_fluid fluid particles (an MPI process's share changes from
  * step to step). Returns 0, or -1 when out of memory. */
