@@ -4,10 +4,11 @@
 # snapshot and the XDMF index, the images, the checkpoint, case.ini (log.txt says how many
 # threads and differs). Checked on:
 #   - a 2D sway run (delta-plus-ALE with EdBC and the volume correction, the defaults; the
-#     graphical method's eps_gm), with 2 threads per process on P = 2 (hybrid);
+#     graphical method's eps_gm; gauges and pressure probes at the walls and inside), with 2
+#     threads per process on P = 2 (hybrid);
 #   - a 2D heave run with water's surface tension and an eta threshold so low that the switch
 #     flips eta 26 times in 0.04 s, with particle images;
-#   - a 3D sway run;
+#   - a 3D sway run, with probes;
 #   - a checkpoint written by 3 processes, continued by 2: the files of the run continued by one
 #     process from its own checkpoint;
 #   - a breakdown in the last process's slab (a tank rolled about its left corner splashes at
@@ -73,6 +74,9 @@ period = 0.5
 [numerics]
 resolution = 8
 sound_speed = 10
+[probes]
+gauges = 0.05, 2.0, 3.95
+pressure = 0.0 0.02; 4.0 0.02 d=0.01; 2.0 0.01
 [output]
 timeseries_every = 0.005
 snapshot_every = 0.02
@@ -104,9 +108,11 @@ snapshot_every = 0.02
 image_every = 0.02
 EOF
 
-# the sway case in a 3D tank, shorter
+# the sway case in a 3D tank, shorter, its probes moved into it
 box3d=(--set case.dim=3 --set tank.length=2.0 --set tank.height=0.15 --set tank.width=0.1
-       --set numerics.resolution=5 --set case.t_end=0.03 --set output.snapshot_every=0.015)
+       --set numerics.resolution=5 --set case.t_end=0.03 --set output.snapshot_every=0.015
+       --set probes.gauges="0.05, 1.0, 1.95"
+       --set probes.pressure="0.0 0.02 0.05; 2.0 0.02 0.05 d=0.01; 1.0 0.01 0.05")
 for c in sway heave box3d; do
   case $c in
     box3d) args=("$work/sway.ini" "${box3d[@]}") ;;

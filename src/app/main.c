@@ -158,19 +158,6 @@ static int checkpoint_case(const checkpoint_data *cd, const cli_args *args, conf
     return RUN_OK;
 }
 
-/* What a run split among processes does not compute yet (docs/mpi.md): the probes, whose
- * kernel sums reach the walls' images of every process's particles. Refused before anything
- * is written. */
-static int refuse_in_split_run(const config *cfg, const run_team *team)
-{
-    if (!team || cfg->n_gauges + cfg->n_pressure_probes == 0) return RUN_OK;
-    fprintf(stderr,
-            "vcsph: %s has probes ([probes]), which a run split among MPI processes does not "
-            "compute yet (docs/mpi.md): run it as one process, or without the probes\n",
-            cfg->name);
-    return RUN_BAD_INPUT;
-}
-
 /* `vcsph run --restart`: the whole checkpoint is read and verified before anything else
  * (by every process of a team). */
 static int restart_run(const cli_args *args, const run_team *team)
@@ -183,7 +170,6 @@ static int restart_run(const cli_args *args, const run_team *team)
     }
     static config cfg;
     int status = checkpoint_case(&cd, args, &cfg);
-    if (status == RUN_OK) status = refuse_in_split_run(&cfg, team);
     if (status == RUN_OK) {
         char dir[CONFIG_PATH_MAX];
         folder_of(args->restart_path, dir, sizeof dir);
@@ -257,7 +243,6 @@ static int vcsph_main(int argc, char **argv, const run_team *team)
     /* before check, so that check --print shows the case.ini that run -o DIR writes */
     if (args.output_dir) snprintf(cfg.output_dir, sizeof cfg.output_dir, "%s", args.output_dir);
     if (args.command == CLI_CHECK) return check_case(&cfg, args.print);
-    if (refuse_in_split_run(&cfg, team)) return RUN_BAD_INPUT;
     run_options opt = {cfg.output_dir, args.quiet, args.overwrite, team};
     return simulation_run(&cfg, &opt);
 }

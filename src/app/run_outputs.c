@@ -3,6 +3,7 @@
  * for a restart. The time loop (simulation.c) decides when each is due. */
 #include "app/output_folder.h"
 #include "app/run_state.h"
+#include "boundary/tank.h"
 #include "core/log.h"
 #include "diag/energy.h"
 #include "diag/probes.h"
@@ -28,11 +29,22 @@ static const char timeseries_header[] =
     "rho_min,rho_max,esurf,work_st,deps_u,deps_du,deps_corr,angmom_x,angmom_y,angmom_z,"
     "work_moves";
 
+/* The fields the probes read, and tank_refresh_ghosts to make the walls' images they read. */
+static bool probe_field(const char *snapshot)
+{
+    static const char *const names[] = {"position", "velocity", "pressure",
+                                        "density",  "mass",     "volume"};
+    for (size_t k = 0; snapshot && k < sizeof names / sizeof names[0]; k++)
+        if (!strcmp(snapshot, names[k])) return true;
+    return false;
+}
+
 /* Whether run_gather brings a field of the registry (core/particles.h) for `which`. */
 static bool gathered(const run *r, uint64_t flags, const char *snapshot, run_gather_kind which)
 {
     if (which == RUN_GATHER_STATE) return flags & FIELD_STATE;
     if (which == RUN_GATHER_POSITIONS) return snapshot && !strcmp(snapshot, "position");
+    if (which == RUN_GATHER_PROBES) return probe_field(snapshot);
     return snapshot && (r->s.pp.surface_tension || !(flags & FIELD_SURFACE_TENSION));
 }
 
@@ -139,21 +151,61 @@ static double dissipated_energy(run *r, double energy)
  * that reconnections release without the discrete force having done the work (docs/energy.md). */
 static double surface_loss(run *r, double esurf) { return -(r->s.work_st + esurf); }
 
+/* On a split solver, the liquid and its walls' images as one process holds them, for the
+ * probes, on the process that writes: the fluid gathered in the global order, its images
+ * made again at this state as solver_prepare made them (a process's own images would miss
+ * the other processes' and its halo's would count twice). Returns 0, or -1 when out of
+ * memory. */
+static int rebuild_whole(run *r, particles *q)
+{
+    solver *s = &r->s;
+    particles whole;
+    run_gather(r, &s->p, RUN_GATHER_PROBES, &whole);
+    size_t n = whole.n_fluid;
+    int failed = team_writes(r->team) && particles_init(q, n + n / 2 + 64);
+    if (team_writes(r->team) && !failed) {
+#define COPY_SCALAR(type, name, flags, snapshot, comment)                                          \
+    if (probe_field(snapshot)) memcpy(q->name, whole.name, n * sizeof *q->name);
+#define COPY_VECTOR(type, name, flags, snapshot, comment)                                          \
+    if (probe_field(snapshot))                                                                     \
+        for (int d = 0; d < DIM; d++) memcpy(q->name[d], whole.name[d], n * sizeof *q->name[d]);
+        PARTICLE_FIELDS(COPY_SCALAR, COPY_VECTOR)
+        q->n_fluid = q->n_total = n;
+        tank_frame frame = solver_frame(s, s->t);
+        failed = tank_make_ghosts(&s->tank, q, 2.0 * s->dv.h + s->skin);
+        if (!failed) tank_refresh_ghosts(&s->tank, q, &frame, s->pp.rho0, s->pp.c0);
+    }
+    run_gathered_free(r, &whole);
+    return failed ? -1 : 0;
+}
+
 /* One row of probes.csv: t, then the gauges, then the pressure probes (docs/case-file.md). */
 void run_write_probes_row(run *r)
 {
     const config *cfg = r->cfg;
-    csv_file *c = &r->probes_csv;
-    csv_put(c, r->s.t);
-    for (int k = 0; k < cfg->n_gauges; k++)
-        csv_put(c, probes_gauge(&r->probes, &r->s.p, cfg->gauges[k]));
-    for (int k = 0; k < cfg->n_pressure_probes; k++) {
-        const double *x = cfg->pressure_probes[k];
-        csv_put(c, x[3] > 0.0
-                       ? probes_sensor(&r->probes, &r->s.p, x, x[3], config_wall_axis(cfg, x))
-                       : probes_pressure(&r->probes, &r->s.p, x));
+    particles rebuilt;
+    const particles *p = &r->s.p;
+    if (r->split) {
+        if (rebuild_whole(r, &rebuilt)) {
+            log_error("vcsph: probes: out of memory; probes.csv misses t = %.9g s", r->s.t);
+            if (team_writes(r->team)) particles_free(&rebuilt);
+            return;
+        }
+        p = &rebuilt;
     }
-    csv_end_row(c);
+    if (team_writes(r->team)) {
+        csv_file *c = &r->probes_csv;
+        csv_put(c, r->s.t);
+        for (int k = 0; k < cfg->n_gauges; k++)
+            csv_put(c, probes_gauge(&r->probes, p, cfg->gauges[k]));
+        for (int k = 0; k < cfg->n_pressure_probes; k++) {
+            const double *x = cfg->pressure_probes[k];
+            csv_put(c, x[3] > 0.0 ? probes_sensor(&r->probes, p, x, x[3], config_wall_axis(cfg, x))
+                                  : probes_pressure(&r->probes, p, x));
+        }
+        csv_end_row(c);
+    }
+    if (r->split && team_writes(r->team)) particles_free(&rebuilt);
 }
 
 /* One row of loads.csv: t, the force and the moment about motion.center in the tank's axes,

@@ -110,8 +110,14 @@ static inline double run_period_end(const run *r) { return (double)r->period * r
 /* ---- run_outputs.c: the files of a run ---- */
 
 /* What run_gather brings together: the positions; the fields of a snapshot (docs/outputs.md);
- * the state a checkpoint keeps (FIELD_STATE). */
-typedef enum { RUN_GATHER_POSITIONS, RUN_GATHER_SNAPSHOT, RUN_GATHER_STATE } run_gather_kind;
+ * the state a checkpoint keeps (FIELD_STATE); what the probes and the walls' images they read
+ * need (position, velocity, pressure, density, mass, volume). */
+typedef enum {
+    RUN_GATHER_POSITIONS,
+    RUN_GATHER_SNAPSHOT,
+    RUN_GATHER_STATE,
+    RUN_GATHER_PROBES
+} run_gather_kind;
 
 /* The fluid's fields of `which`, in the global order, on the process that writes the files
  * (run_team.h): with the solver split among a team, *whole holds copies of them gathered from
