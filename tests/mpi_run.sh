@@ -9,6 +9,8 @@
 #   - a 2D heave run with water's surface tension and an eta threshold so low that the switch
 #     flips eta 26 times in 0.04 s, with particle images;
 #   - a 3D sway run, with probes;
+#   - a dam break whose front crosses the whole tank, on 2 and 4 processes (migration into
+#     slabs that start empty, the boundaries moving);
 #   - a checkpoint written by 3 processes, continued by 2: the files of the run continued by one
 #     process from its own checkpoint;
 #   - a breakdown in the last process's slab (a tank rolled about its left corner splashes at
@@ -127,6 +129,36 @@ for c in sway heave box3d; do
   done
 done
 grep -c eta_switch heave/one/out/events.csv | grep -qx 26 || fail "heave: not 26 eta switches"
+
+# A dam break whose front crosses the whole tank in 1 s: the liquid starts in the first of
+# the four strips of cells, so on 4 processes three slabs start empty, and every process takes
+# particles in turn as the front reaches it (a body of liquid ending in a slab's last cell
+# column once made the fold of its sums hand back zeros: NaN at step 108 on 4 processes).
+cat >dam.ini <<'EOF'
+[case]
+name = dam
+dim = 2
+t_end = 1.0
+[tank]
+length = 1.0
+height = 0.3
+[liquid]
+height = 0.1
+length = 0.2
+[numerics]
+resolution = 25
+[output]
+timeseries_every = 0.01
+snapshot_every = 0.5
+EOF
+one dam/one "$work/dam.ini" -o out || fail "dam: one process exited $?"
+for p in 2 4; do
+  mpi dam/np$p $p 1 "$work/dam.ini" -o out || fail "dam: $p processes exited $?"
+  same_files dam/one dam/np$p "a dam break across the tank, $p processes"
+  shares=$(sed -n 's/.*particles per process at the end: //p' dam/np$p/out/log.txt)
+  [ "$(echo "$shares" | tr ',' '\n' | awk '$1 > 0' | wc -l)" = $p ] ||
+    fail "dam, $p processes: not every process holds liquid at the end ($shares)"
+done
 
 # restart on another number of processes
 one restart/one "$work/sway.ini" -o out --set case.t_end=0.03 &&

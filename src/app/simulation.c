@@ -19,6 +19,7 @@
 #include <math.h>
 #include <omp.h>
 #include <signal.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -357,6 +358,24 @@ int simulation_check_checkpoint_dim(const config *cfg, const checkpoint_data *cd
     return status;
 }
 
+/* How a team's processes share the liquid at the end, on the terminal and in log.txt: the
+ * balance of the slabs, which follow the liquid (docs/mpi.md). Collective. */
+static void log_shares(const run *r)
+{
+    if (!r->split) return;
+    int64_t mine = (int64_t)r->s.p.n_fluid;
+    size_t n;
+    int64_t *all = r->team->gather(r->team, &mine, 1, sizeof mine, &n);
+    if (!all) return;
+    char text[1024];
+    int len = snprintf(text, sizeof text, "vcsph: particles per process at the end:");
+    for (size_t q = 0; q < n && len > 0 && (size_t)len < sizeof text; q++)
+        len += snprintf(text + len, sizeof text - (size_t)len, "%s %lld", q ? "," : "",
+                        (long long)all[q]);
+    log_info("%s", text);
+    free(all);
+}
+
 /* The whole run's summary, line by line, on the terminal and in log.txt. */
 static void log_summary(const char *dir)
 {
@@ -455,6 +474,7 @@ static int run_case_with(config *cfg, const run_options *opt, const checkpoint_d
     thread_tuner_stop(&r.threads);
     interrupt_restore();
     if (team_writes(team)) log_summary(opt->output_dir);
+    log_shares(&r);
     /* the steps of this invocation: a restarted run counts from its checkpoint */
     double wall = progress_wall_time() - wall0;
     long steps = r.s.step - step0;

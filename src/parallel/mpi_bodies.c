@@ -123,11 +123,12 @@ static void share(const bodies_domain *hooks, const particles *p, double *values
 
 enum { TAG_FORWARD = 11, TAG_BACKWARD = 12 };
 
-/* Sends the sums of the bodies of one side's halo to that neighbour, as (id, sums...) records */
-static void send_sums(const mpi_domain *d, const particles *p, const bodies *b, const double *sums,
-                      int width, int side, int tag, uint8_t *seen, int32_t *list)
+/* Sends the sums of the `count` bodies of `list` to the neighbour on one side, as
+ * (id, sums...) records */
+static void send_sums(const mpi_domain *d, const double *sums, int width, int side, int tag,
+                      const int32_t *list, size_t count)
 {
-    size_t count = halo_bodies(d, p, b, side, seen, list), record = 1 + (size_t)width;
+    size_t record = 1 + (size_t)width;
     double *out = malloc((count * record + 1) * sizeof *out);
     if (!out) MPI_Abort(d->comm, 3);
     for (size_t k = 0; k < count; k++) {
@@ -139,8 +140,10 @@ static void send_sums(const mpi_domain *d, const particles *p, const bodies *b, 
     free(out);
 }
 
-/* Receives a neighbour's (id, sums...) records into sums. */
-static void receive_sums(const mpi_domain *d, double *sums, int width, int from, int tag)
+/* Receives a neighbour's (id, sums...) records into sums; their ids into list (room for every
+ * body), returning how many. */
+static size_t receive_sums(const mpi_domain *d, double *sums, int width, int from, int tag,
+                           int32_t *list)
 {
     MPI_Status status;
     int n;
@@ -149,34 +152,45 @@ static void receive_sums(const mpi_domain *d, double *sums, int width, int from,
     double *in = malloc(((size_t)n + 1) * sizeof *in);
     if (!in) MPI_Abort(d->comm, 3);
     MPI_Recv(in, n, MPI_DOUBLE, from, tag, d->comm, MPI_STATUS_IGNORE);
-    size_t record = 1 + (size_t)width;
-    for (size_t k = 0; k < (size_t)n / record; k++)
-        memcpy(sums + (size_t)in[k * record] * width, in + k * record + 1, width * sizeof *in);
+    size_t record = 1 + (size_t)width, count = (size_t)n / record;
+    for (size_t k = 0; k < count; k++) {
+        list[k] = (int32_t)in[k * record];
+        memcpy(sums + (size_t)list[k] * width, in + k * record + 1, width * sizeof *in);
+    }
     free(in);
+    return count;
 }
 
 /* A body's sum is a fold over its particles in global order, which is rank order: each
  * process starts its bodies' sums from the previous process's partial sums, folds its own
  * particles and hands them on; the last process holding a body has its total, which goes
- * back the same way. */
+ * back the same way. Forward, a process hands on the bodies in its right halo: those with
+ * particles of its own on the next process. Back, it returns exactly the bodies it was
+ * handed: a body whose particles reach into the next process's halo without any of its own
+ * there (a body ending in a slab's last cell column) gets no total from there, which would be
+ * that process's zeros. */
 static void sum_bodies(const bodies_domain *hooks, const particles *p, const bodies *b,
                        double *sums, int width, bodies_fold fold, void *context)
 {
     mpi_domain *d = hooks->context;
     int rank = d->slabs.rank, last = d->slabs.n_ranks - 1;
     uint8_t *seen = malloc(b->count + 1);
-    int32_t *list = malloc((b->count + 1) * sizeof *list);
-    if (!seen || !list) MPI_Abort(d->comm, 3);
+    int32_t *handed = malloc((b->count + 1) * sizeof *handed);
+    int32_t *onward = malloc((b->count + 1) * sizeof *onward);
+    if (!seen || !handed || !onward) MPI_Abort(d->comm, 3);
     for (size_t k = 0; k < b->count * (size_t)width; k++) sums[k] = 0.0;
-    if (rank > 0) receive_sums(d, sums, width, rank - 1, TAG_FORWARD);
+    size_t n_handed = 0;
+    if (rank > 0) n_handed = receive_sums(d, sums, width, rank - 1, TAG_FORWARD, handed);
     fold(context, sums);
     if (rank < last) {
-        send_sums(d, p, b, sums, width, 1, TAG_FORWARD, seen, list);
-        receive_sums(d, sums, width, rank + 1, TAG_BACKWARD);
+        size_t n_onward = halo_bodies(d, p, b, 1, seen, onward);
+        send_sums(d, sums, width, 1, TAG_FORWARD, onward, n_onward);
+        receive_sums(d, sums, width, rank + 1, TAG_BACKWARD, onward);
     }
-    if (rank > 0) send_sums(d, p, b, sums, width, 0, TAG_BACKWARD, seen, list);
+    if (rank > 0) send_sums(d, sums, width, 0, TAG_BACKWARD, handed, n_handed);
     free(seen);
-    free(list);
+    free(handed);
+    free(onward);
 }
 
 bodies_domain mpi_bodies_domain(mpi_domain *d)
