@@ -388,30 +388,46 @@ static void local_volume_errors(solver *s)
         s->p.eps_vi[i] = volume_local_error(&s->p, i, s->dv.cell_volume);
 }
 
-/* The file of snapshot k (the next one) from the gathered fields, and the XDMF index that
- * lists it; on the process that writes. */
-static int write_snapshot_file(run *r, const particles *whole, int k)
+/* Whether the processes of a split run write each snapshot together through parallel HDF5,
+ * each its own rows, rather than gathering the liquid on the process that writes. */
+static bool written_together(const run *r)
+{
+    return r->split && SNAPSHOT_PARALLEL && r->team->io_comm;
+}
+
+/* The file of snapshot k (the next one), of p: this process's particles when the team writes
+ * it together, each its rows of the global order; else the whole liquid, gathered. Then the
+ * XDMF index that lists it, by the process that writes. */
+static int write_snapshot_file(run *r, const particles *p, int k, bool together)
 {
     const solver *s = &r->s;
     char path[CONFIG_PATH_MAX + 96], err[512];
     run_out_path(r, path, sizeof path, r->snapshot_files[k]);
     snapshot_field fields[SNAPSHOT_FIELDS_MAX];
-    int n_fields = snapshot_fields(s, whole, fields);
+    int n_fields = snapshot_fields(s, p, fields);
     snapshot_attrs attrs = {s->t,     s->step, s->eta_control.eta, DIM,
                             s->dv.dr, s->dv.h, r->case_text};
-    if (snapshot_write(path, whole->n_fluid, fields, n_fields, &attrs, err, sizeof err)) {
+    size_t first = together ? r->team->first_index(r->team, p->n_fluid) : 0;
+    if (snapshot_write_part(path, p->n_fluid, first, r->snapshot_counts[k],
+                            together ? r->team->io_comm : NULL, fields, n_fields, &attrs, err,
+                            sizeof err)) {
         log_error("vcsph: %s", err);
         return -1;
     }
-    return write_xdmf(r, fields, n_fields);
+    return team_writes(r->team) ? write_xdmf(r, fields, n_fields) : 0;
 }
 
 int run_write_snapshot(run *r)
 {
     solver *s = &r->s;
     local_volume_errors(s);
-    particles whole;
-    run_gather(r, &s->p, RUN_GATHER_SNAPSHOT, &whole);
+    bool together = written_together(r);
+    particles gathered;
+    const particles *p = &s->p;
+    if (!together) {
+        run_gather(r, &s->p, RUN_GATHER_SNAPSHOT, &gathered);
+        p = &gathered;
+    }
     char name[64];
     snapshot_name(r->n_snapshots, name, sizeof name);
     int k = r->n_snapshots, failed = run_reserve_snapshots(r, k + 1);
@@ -419,11 +435,12 @@ int run_write_snapshot(run *r)
         r->n_snapshots++;
         r->snapshot_files[k] = strdup(name);
         r->snapshot_times[k] = s->t;
-        r->snapshot_counts[k] = whole.n_fluid;
-        failed =
-            !r->snapshot_files[k] || (team_writes(r->team) && write_snapshot_file(r, &whole, k));
+        r->snapshot_counts[k] =
+            together ? (size_t)reducer_total(solver_reducer(s), (long)s->p.n_fluid) : p->n_fluid;
+        failed = !r->snapshot_files[k] ||
+                 ((together || team_writes(r->team)) && write_snapshot_file(r, p, k, together));
     }
-    run_gathered_free(r, &whole);
+    if (!together) run_gathered_free(r, &gathered);
     return team_agree(r->team, failed) ? -1 : 0;
 }
 

@@ -17,6 +17,12 @@ typedef struct run_team {
     /* Whether any process has a message (has != 0), and the message of the lowest rank that
        has one, into text on every process (a breakdown's diagnosis). Collective. */
     int (*first_message)(const struct run_team *t, int has, char *text, size_t len);
+    /* The global index of this process's first of n elements, the counts of the ranks before
+       it. Collective. */
+    size_t (*first_index)(const struct run_team *t, size_t n);
+    /* The communicator of a file that every process writes its part of at once (an MPI_Comm,
+       for io/snapshot.h's snapshot_write_part). */
+    const void *io_comm;
     /* Every process's n elements of `size` bytes, on rank 0 one after the other in rank order
        (malloc'd; the caller frees it), NULL on the others; *n_total the count of them all.
        Collective. */

@@ -8,6 +8,9 @@
 
 #include <errno.h>
 #include <hdf5.h>
+#ifdef VCSPH_PARALLEL_HDF5
+#include <mpi.h>
+#endif
 #include <stdbool.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -17,6 +20,14 @@
 /* Vector fields are interleaved through a buffer of at most this many rows (192 KiB for
  * 3 doubles), so a snapshot never needs a second copy of a whole n x dim array. */
 enum { INTERLEAVE_ROWS = 8192 };
+
+/* The rows of the file that this process writes: first .. first + n - 1 of total (a whole
+ * snapshot: 0, n, n), and the communicator of the processes that write the others (NULL: this
+ * one writes them all). */
+typedef struct {
+    size_t n, first, total;
+    const void *comm; /* an MPI_Comm, parallel HDF5 only */
+} rows_part;
 
 /* Where a failure of snapshot_write is reported: the caller's buffer, plus what HDF5 said
  * about the first failed call (caught when it happens: every later HDF5 call, even the
@@ -161,9 +172,13 @@ static hid_t create_dataset(hid_t file, const char *name, field_type type, size_
     hid_t space = H5Screate_simple(ncomp > 1 ? 2 : 1, dims, NULL);
     if (space < 0) return H5I_INVALID_HID;
     /* no modification times in the object headers: the same state gives the same bytes
-       (runs are compared byte for byte, docs/architecture.md) */
+       (runs are compared byte for byte, docs/architecture.md); the storage placed when the
+       dataset is made and never filled before the rows arrive, as parallel HDF5 must, so that
+       a file written by several processes is laid out as one written by one */
     hid_t dcpl = H5Pcreate(H5P_DATASET_CREATE);
     H5Pset_obj_track_times(dcpl, 0);
+    H5Pset_alloc_time(dcpl, H5D_ALLOC_TIME_EARLY);
+    H5Pset_fill_time(dcpl, H5D_FILL_TIME_NEVER);
     hid_t dset =
         H5Dcreate2(file, name, field_file_type(type), space, H5P_DEFAULT, dcpl, H5P_DEFAULT);
     H5Pclose(dcpl);
@@ -191,10 +206,11 @@ static int write_rows(hid_t dset, field_type type, int ncomp, size_t row0, size_
     return rc;
 }
 
-/* Interleaves the SoA components block by block, so memory stays bounded whatever n. */
-static int write_vector_data(hid_t dset, const snapshot_field *f, size_t n)
+/* Interleaves the SoA components block by block, so memory stays bounded whatever n; this
+ * process's rows of the file. */
+static int write_vector_data(hid_t dset, const snapshot_field *f, const rows_part *part)
 {
-    const size_t es = field_elem_size(f->type), nc = (size_t)f->ncomp;
+    const size_t es = field_elem_size(f->type), nc = (size_t)f->ncomp, n = part->n;
     const size_t block = n < INTERLEAVE_ROWS ? n : INTERLEAVE_ROWS;
     unsigned char *buf = malloc(block * nc * es);
     if (!buf) return -1;
@@ -204,25 +220,22 @@ static int write_vector_data(hid_t dset, const snapshot_field *f, size_t n)
         for (size_t c = 0; c < nc; ++c)
             copy_strided(buf + c * es, nc, (const unsigned char *)f->component[c] + row0 * es, rows,
                          es);
-        rc = write_rows(dset, f->type, f->ncomp, row0, rows, buf);
+        rc = write_rows(dset, f->type, f->ncomp, part->first + row0, rows, buf);
     }
     free(buf);
     return rc;
 }
 
-static int write_field(hid_t file, const snapshot_field *f, size_t n)
+static int write_field(hid_t file, const snapshot_field *f, const rows_part *part)
 {
-    hid_t dset = create_dataset(file, f->name, f->type, n, f->ncomp);
+    hid_t dset = create_dataset(file, f->name, f->type, part->total, f->ncomp);
     if (dset < 0) return -1;
     int rc = 0;
-    if (n > 0) { /* an empty dataset has nothing to write, and no buffer to point at */
+    if (part->n > 0) { /* no rows here: nothing to write, and no buffer to point at */
         if (f->ncomp == 1)
-            rc = H5Dwrite(dset, field_mem_type(f->type), H5S_ALL, H5S_ALL, H5P_DEFAULT,
-                          f->component[0]) < 0
-                     ? -1
-                     : 0;
+            rc = write_rows(dset, f->type, 1, part->first, part->n, f->component[0]);
         else
-            rc = write_vector_data(dset, f, n);
+            rc = write_vector_data(dset, f, part);
     }
     if (H5Dclose(dset) < 0) rc = -1;
     return rc;
@@ -246,17 +259,18 @@ static void fill_vertices(void *buf, field_type type, size_t row0, size_t rows)
     }
 }
 
-/* SNAPSHOT_VERTICES_DATASET: 0 .. n-1, generated block by block (see snapshot.h for why). */
-static int write_vertices(hid_t file, size_t n)
+/* SNAPSHOT_VERTICES_DATASET: 0 .. n-1, generated block by block (see snapshot.h for why);
+ * this process's rows of it. */
+static int write_vertices(hid_t file, const rows_part *part)
 {
-    const field_type type = vertices_type(n);
-    hid_t dset = create_dataset(file, SNAPSHOT_VERTICES_DATASET, type, n, 1);
+    const field_type type = vertices_type(part->total);
+    hid_t dset = create_dataset(file, SNAPSHOT_VERTICES_DATASET, type, part->total, 1);
     if (dset < 0) return -1;
-    const size_t block = n < INTERLEAVE_ROWS ? n : INTERLEAVE_ROWS;
+    const size_t n = part->n, block = n < INTERLEAVE_ROWS ? n : INTERLEAVE_ROWS;
     void *buf = n > 0 ? malloc(block * field_elem_size(type)) : NULL;
     int rc = (n > 0 && !buf) ? -1 : 0;
-    for (size_t row0 = 0; rc == 0 && row0 < n; row0 += block) {
-        const size_t rows = n - row0 < block ? n - row0 : block;
+    for (size_t row0 = part->first; rc == 0 && row0 < part->first + n; row0 += block) {
+        const size_t rows = part->first + n - row0 < block ? part->first + n - row0 : block;
         fill_vertices(buf, type, row0, rows);
         rc = write_rows(dset, type, 1, row0, rows, buf);
     }
@@ -266,33 +280,97 @@ static int write_vertices(hid_t file, size_t n)
 }
 
 /* Writes everything into an already created file; the caller closes and commits it. */
-static int write_contents(hid_t file, size_t n, const snapshot_field *fields, int n_fields,
-                          const snapshot_attrs *attrs, const report *r)
+static int write_contents(hid_t file, const rows_part *part, const snapshot_field *fields,
+                          int n_fields, const snapshot_attrs *attrs, const report *r)
 {
     if (write_attrs(file, attrs, r) < 0) return -1;
     for (int i = 0; i < n_fields; ++i) {
-        if (write_field(file, &fields[i], n) < 0) {
+        if (write_field(file, &fields[i], part) < 0) {
             fail_hdf5(r, "cannot write dataset", fields[i].name);
             return -1;
         }
     }
-    if (write_vertices(file, n) < 0) {
+    if (write_vertices(file, part) < 0) {
         fail_hdf5(r, "cannot write dataset", SNAPSHOT_VERTICES_DATASET);
         return -1;
     }
     return 0;
 }
 
-static int write_h5_file(const char *path, const char *tmp, size_t n, const snapshot_field *fields,
-                         int n_fields, const snapshot_attrs *attrs, const report *r)
+#ifdef VCSPH_PARALLEL_HDF5
+/* The file access of a part: every process of its communicator opens the file together
+ * (MPI-IO); H5P_DEFAULT for a whole snapshot. */
+static hid_t file_access(const rows_part *part)
 {
-    hid_t file = H5Fcreate(tmp, H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+    if (!part->comm) return H5P_DEFAULT;
+    hid_t fapl = H5Pcreate(H5P_FILE_ACCESS);
+    if (fapl >= 0 && H5Pset_fapl_mpio(fapl, *(const MPI_Comm *)part->comm, MPI_INFO_NULL) < 0) {
+        H5Pclose(fapl);
+        return H5I_INVALID_HID;
+    }
+    return fapl;
+}
+
+/* Whether every process of the part's communicator succeeded (rc 0). */
+static int all_succeeded(const rows_part *part, int rc)
+{
+    int failed = rc != 0, any;
+    if (!part->comm) return !failed;
+    MPI_Allreduce(&failed, &any, 1, MPI_INT, MPI_LOR, *(const MPI_Comm *)part->comm);
+    return !any;
+}
+
+/* Whether this process publishes the file: rank 0 of the part's communicator. */
+static int publishes(const rows_part *part)
+{
+    int rank = 0;
+    if (part->comm) MPI_Comm_rank(*(const MPI_Comm *)part->comm, &rank);
+    return rank == 0;
+}
+
+/* Rank 0's rename, its status shared. */
+static int shared_status(const rows_part *part, int rc)
+{
+    if (part->comm) MPI_Bcast(&rc, 1, MPI_INT, 0, *(const MPI_Comm *)part->comm);
+    return rc;
+}
+#else
+static hid_t file_access(const rows_part *part)
+{
+    return part->comm ? H5I_INVALID_HID : H5P_DEFAULT;
+}
+static int all_succeeded(const rows_part *part, int rc)
+{
+    (void)part;
+    return rc == 0;
+}
+static int publishes(const rows_part *part)
+{
+    (void)part;
+    return 1;
+}
+static int shared_status(const rows_part *part, int rc)
+{
+    (void)part;
+    return rc;
+}
+#endif
+
+/* Writes this process's part of the file under tmp and renames it to path; with a
+ * communicator every process of it calls this, and the file is published once all wrote. */
+static int write_h5_file(const char *path, const char *tmp, const rows_part *part,
+                         const snapshot_field *fields, int n_fields, const snapshot_attrs *attrs,
+                         const report *r)
+{
+    hid_t fapl = file_access(part);
+    hid_t file = fapl < 0 ? H5I_INVALID_HID : H5Fcreate(tmp, H5F_ACC_TRUNC, H5P_DEFAULT, fapl);
+    if (fapl >= 0 && fapl != H5P_DEFAULT) H5Pclose(fapl);
     if (file < 0) {
         fail_hdf5(r, "cannot create", tmp);
-        remove(tmp); /* in case the create got as far as making the file */
+        if (publishes(part)) remove(tmp); /* in case the create got as far as making the file */
         return -1;
     }
-    int rc = write_contents(file, n, fields, n_fields, attrs, r);
+    int rc = write_contents(file, part, fields, n_fields, attrs, r);
     if (rc == 0 && H5Fflush(file, H5F_SCOPE_LOCAL) < 0) {
         fail_hdf5(r, "cannot flush", tmp);
         rc = -1;
@@ -301,21 +379,22 @@ static int write_h5_file(const char *path, const char *tmp, size_t n, const snap
         fail_hdf5(r, "cannot close", tmp);
         rc = -1;
     }
-    if (rc != 0) {
-        remove(tmp);
+    if (!all_succeeded(part, rc)) {
+        if (publishes(part)) remove(tmp);
         return -1;
     }
-    return atomic_commit("snapshot", tmp, path, r->err, r->err_len);
+    rc = publishes(part) ? atomic_commit("snapshot", tmp, path, r->err, r->err_len) : 0;
+    return shared_status(part, rc);
 }
 
-int snapshot_write(const char *path, size_t n, const snapshot_field *fields, int n_fields,
-                   const snapshot_attrs *attrs, char *err, size_t err_len)
+static int write_part(const char *path, const rows_part *part, const snapshot_field *fields,
+                      int n_fields, const snapshot_attrs *attrs, char *err, size_t err_len)
 {
     if (!path || !path[0] || !attrs) {
         io_error(err, err_len, "snapshot: no path or attributes given");
         return -1;
     }
-    if (check_fields(n, fields, n_fields, err, err_len) < 0) return -1;
+    if (check_fields(part->n, fields, n_fields, err, err_len) < 0) return -1;
     char *tmp = atomic_temp_path(path);
     if (!tmp) {
         io_error(err, err_len, "snapshot: out of memory");
@@ -323,10 +402,25 @@ int snapshot_write(const char *path, size_t n, const snapshot_field *fields, int
     }
     report r = {.err = err, .err_len = err_len};
     hdf5_errors_begin(&r.hdf5);
-    int rc = write_h5_file(path, tmp, n, fields, n_fields, attrs, &r);
+    int rc = write_h5_file(path, tmp, part, fields, n_fields, attrs, &r);
     hdf5_errors_end(&r.hdf5);
     free(tmp);
     return rc;
+}
+
+int snapshot_write(const char *path, size_t n, const snapshot_field *fields, int n_fields,
+                   const snapshot_attrs *attrs, char *err, size_t err_len)
+{
+    rows_part whole = {n, 0, n, NULL};
+    return write_part(path, &whole, fields, n_fields, attrs, err, err_len);
+}
+
+int snapshot_write_part(const char *path, size_t n, size_t first, size_t total, const void *comm,
+                        const snapshot_field *fields, int n_fields, const snapshot_attrs *attrs,
+                        char *err, size_t err_len)
+{
+    rows_part part = {n, first, total, comm};
+    return write_part(path, &part, fields, n_fields, attrs, err, err_len);
 }
 
 /* ---------------------------------------------------------------------------------------- */

@@ -39,6 +39,25 @@ typedef struct {
 int snapshot_write(const char *path, size_t n, const snapshot_field *fields, int n_fields,
                    const snapshot_attrs *attrs, char *err, size_t err_len);
 
+/* Whether snapshot_write_part can write a file with several processes: the build's HDF5 is
+ * the parallel one (the MPI build). */
+#ifdef VCSPH_PARALLEL_HDF5
+#define SNAPSHOT_PARALLEL 1
+#else
+#define SNAPSHOT_PARALLEL 0
+#endif
+
+/* snapshot_write by every process of the MPI communicator *comm (an MPI_Comm, passed as a
+ * pointer so that this header needs no MPI) at once, collectively through parallel HDF5: this
+ * process's n rows (the components of `fields` hold them) are rows first .. first + n - 1 of
+ * the file's total. Every process gives the same fields, attributes and path; the file is
+ * the one snapshot_write makes of all the rows, byte for byte, and is renamed into place by
+ * rank 0 once every process has written. With comm NULL one process writes the whole file,
+ * first 0 and total n. Returns 0, or -1 with a message, the same on every process. */
+int snapshot_write_part(const char *path, size_t n, size_t first, size_t total, const void *comm,
+                        const snapshot_field *fields, int n_fields, const snapshot_attrs *attrs,
+                        char *err, size_t err_len);
+
 /* Writes (atomically) the XDMF temporal collection `xmf_path` that lists the snapshot files
  * `files[k]` (paths relative to the XDMF file's folder) at times `times[k]` with particle
  * counts `counts[k]`; every file holds the same fields. */

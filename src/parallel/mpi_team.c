@@ -1,6 +1,7 @@
 /* mpi_team: the run's team on MPI (mpi_team.h). Dimension-free: the split goes to the 2D or 3D
  * solver's mpi_domain_split. */
 #include "parallel/mpi_team.h"
+#include "parallel/mpi_reduce.h"
 
 #include <limits.h>
 #include <stdint.h>
@@ -65,6 +66,11 @@ static void *gather(const run_team *t, const void *mine, size_t n, size_t size, 
     return all;
 }
 
+static size_t first_index(const run_team *t, size_t n)
+{
+    return (size_t)mpi_first_index(n, team_comm(t));
+}
+
 static void *split(const run_team *t, int dim, void *solver)
 {
     return (dim == 3 ? mpi_domain_split_3d : mpi_domain_split_2d)(solver, team_comm(t));
@@ -83,6 +89,8 @@ void mpi_team_init(run_team *t, MPI_Comm *comm)
     t->agree = agree;
     t->first_message = first_message;
     t->gather = gather;
+    t->first_index = first_index;
+    t->io_comm = comm;
     t->split = split;
     t->unsplit = unsplit;
     t->context = comm;
