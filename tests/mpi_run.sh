@@ -11,6 +11,7 @@
 #   - a 3D sway run, with probes;
 #   - a dam break whose front crosses the whole tank, on 2 and 4 processes (migration into
 #     slabs that start empty, the boundaries moving);
+#   - 11 processes for a tank of 10 strips of cells: exit 2, nothing written;
 #   - a checkpoint written by 3 processes, continued by 2: the files of the run continued by one
 #     process from its own checkpoint;
 #   - a breakdown in the last process's slab (a tank rolled about its left corner splashes at
@@ -159,6 +160,12 @@ for p in 2 4; do
   [ "$(echo "$shares" | tr ',' '\n' | awk '$1 > 0' | wc -l)" = $p ] ||
     fail "dam, $p processes: not every process holds liquid at the end ($shares)"
 done
+
+# more processes than strips of cells (10 here): refused before anything is written
+mpi strips 11 1 "$work/sway.ini" -o out
+[ $? = 2 ] || fail "11 processes on 10 strips: not exit 2"
+grep -q "at most 10 strips" strips/mpi.txt || fail "11 processes on 10 strips: not said"
+[ ! -e strips/out ] || fail "11 processes on 10 strips: the folder was made"
 
 # restart on another number of processes
 one restart/one "$work/sway.ini" -o out --set case.t_end=0.03 &&

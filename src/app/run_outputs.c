@@ -90,8 +90,6 @@ void run_event(run *r, const char *what, const char *detail)
     csv_end_row(&r->events);
 }
 
-/* The graphical method, Eq. (15): eps_GM of the current positions (sec. 3.2) against the
- * initial configuration's count (run_graphical_reference). */
 /* The graphical method's volume of the whole liquid: on a split solver, drawn by the process
  * that writes from the gathered positions (the others get 0 and never use it). */
 static int graphical_volume(run *r, double *volume, char *err, size_t err_len)
@@ -106,6 +104,8 @@ static int graphical_volume(run *r, double *volume, char *err, size_t err_len)
     return failed ? -1 : 0;
 }
 
+/* The graphical method, Eq. (15): eps_GM of the current positions (sec. 3.2) against the
+ * initial configuration's count (run_graphical_reference). */
 static int graphical_measure(run *r, double *eps_gm)
 {
     char err[256];

@@ -317,6 +317,20 @@ static void log_start(const run *r)
     log_info("vcsph: output in %s", r->opt->output_dir);
 }
 
+/* Each process of a team takes whole strips of cells along x (docs/mpi.md): more processes
+ * than strips are refused before anything is written. */
+static int check_strips(const run *r, char *err, size_t err_len)
+{
+    size_t strips = solver_strips_at_most(&r->s);
+    if ((size_t)r->team->size <= strips) return RUN_OK;
+    snprintf(err, err_len,
+             "%d processes, but the tank has at most %zu strips of %d cells along x at this "
+             "resolution, and each process takes whole strips (docs/mpi.md): run on at most %zu "
+             "processes",
+             r->team->size, strips, CELL_STRIP, strips);
+    return RUN_BAD_INPUT;
+}
+
 /* The solver split among the run's team, each process keeping its share (docs/mpi.md). */
 static int split_solver(run *r, char *err, size_t err_len)
 {
@@ -340,6 +354,7 @@ static int set_up_run(run *r, const config *cfg, const run_team *team, const che
     bool share = team && !cd;
     int status =
         solver_init_part(&r->s, cfg, share ? team->rank : 0, share ? team->size : 1, err, err_len);
+    if (status == RUN_OK && team) status = check_strips(r, err, err_len);
     if (status == RUN_OK && share) status = split_solver(r, err, err_len);
     if ((status = team_agree(team, status))) return status;
     /* the initial lattice's raster, before a checkpoint's state replaces it */

@@ -18,7 +18,8 @@ int lattice_fill(particles *p, const config *cfg, const derived *dv, size_t firs
                 /* the predicate derived_compute counted n_fluid with */
                 if (!derived_lattice_point(cfg, dv, c0, c1, c2, x)) continue;
                 if (i == n) return -1; /* cannot happen: the count is the same loop */
-                if (i++ < first || i > end) continue;
+                size_t index = i++;    /* the point's place in the lattice order: its id */
+                if (index < first || index >= end) continue;
                 size_t k = kept++;
                 for (int d = 0; d < DIM; d++) {
                     p->x[d][k] = x[d];
@@ -29,7 +30,7 @@ int lattice_fill(particles *p, const config *cfg, const derived *dv, size_t firs
                 p->p[k] = pressure;
                 p->m[k] = p->rho[k] * cell_volume;
                 p->vol[k] = p->m[k] / p->rho[k];
-                p->id[k] = (int64_t)(i - 1);
+                p->id[k] = (int64_t)index;
             }
     if (i != n) return -1;
     p->n_fluid = p->n_total = kept;

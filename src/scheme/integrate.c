@@ -20,6 +20,29 @@ static double time_step(const solver *s)
     return dt;
 }
 
+/* The thinnest skin, in dr: a particle at rest still gets one. */
+#define SKIN_MIN 0.05
+
+/* The cell grid of the neighbour search within `cutoff`: the tank and a cutoff around it. */
+static int neighbour_grid(const solver *s, cell_grid *g, double cutoff)
+{
+    double lo[DIM], hi[DIM];
+    for (int d = 0; d < DIM; d++) {
+        lo[d] = -cutoff;
+        hi[d] = s->tank.size[d] + cutoff;
+    }
+    return cells_setup(g, lo, hi, cutoff);
+}
+
+size_t solver_strips_at_most(const solver *s)
+{
+    cell_grid g = {0};
+    size_t strips =
+        neighbour_grid(s, &g, 2.0 * s->dv.h + SKIN_MIN * s->dv.dr) ? 0 : cells_n_strips(&g);
+    cells_free(&g);
+    return strips;
+}
+
 /* Sorts the fluid by cell, makes the ghosts and lists the neighbours within 2h + skin, where
  * the skin covers the relative motion of two particles during the step: pairs beyond 2h add
  * exactly zero, so the results do not depend on the skin as long as it is wide enough. */
@@ -28,14 +51,9 @@ static int build_neighbours(solver *s, double dt, const tank_frame *frame)
     particles *p = &s->p;
     double max_speed = fluid_max_speed(&s->p, s->scratch);
     double bound = dt * (solver_max(s, &max_speed, 1) + dt * s->max_acc);
-    s->skin = 3.0 * bound > 0.05 * s->dv.dr ? 3.0 * bound : 0.05 * s->dv.dr;
+    s->skin = 3.0 * bound > SKIN_MIN * s->dv.dr ? 3.0 * bound : SKIN_MIN * s->dv.dr;
     double cutoff = 2.0 * s->dv.h + s->skin;
-    double lo[DIM], hi[DIM];
-    for (int d = 0; d < DIM; d++) {
-        lo[d] = -cutoff;
-        hi[d] = s->tank.size[d] + cutoff;
-    }
-    if (cells_setup(&s->grid, lo, hi, cutoff)) return -1;
+    if (neighbour_grid(s, &s->grid, cutoff)) return -1;
     /* fluid sorted by cell: neighbours are close in memory */
     p->n_total = p->n_fluid;
     p->n_halo = 0;

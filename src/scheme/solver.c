@@ -9,7 +9,6 @@
 #include "scheme/models.h"
 #include "scheme/volume_correction.h"
 
-#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>

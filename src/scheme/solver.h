@@ -96,17 +96,18 @@ static inline double solver_max(const solver *s, const double *a, size_t n)
     return reducer_max(solver_reducer(s), a, n);
 }
 
-#define solver_init        DIM_NAME(solver_init)
-#define solver_init_part   DIM_NAME(solver_init_part)
-#define solver_reserve     DIM_NAME(solver_reserve)
-#define solver_free        DIM_NAME(solver_free)
-#define solver_step        DIM_NAME(solver_step)
-#define solver_prepare     DIM_NAME(solver_prepare)
-#define solver_advance     DIM_NAME(solver_advance)
-#define solver_frame       DIM_NAME(solver_frame)
-#define solver_update_eos  DIM_NAME(solver_update_eos)
-#define solver_diagnostics DIM_NAME(solver_diagnostics)
-#define solver_health      DIM_NAME(solver_health)
+#define solver_init           DIM_NAME(solver_init)
+#define solver_init_part      DIM_NAME(solver_init_part)
+#define solver_strips_at_most DIM_NAME(solver_strips_at_most)
+#define solver_reserve        DIM_NAME(solver_reserve)
+#define solver_free           DIM_NAME(solver_free)
+#define solver_step           DIM_NAME(solver_step)
+#define solver_prepare        DIM_NAME(solver_prepare)
+#define solver_advance        DIM_NAME(solver_advance)
+#define solver_frame          DIM_NAME(solver_frame)
+#define solver_update_eos     DIM_NAME(solver_update_eos)
+#define solver_diagnostics    DIM_NAME(solver_diagnostics)
+#define solver_health         DIM_NAME(solver_health)
 
 /* Particles on a lattice filling the liquid box with the hydrostatic state (sec. 2.1).
  * Returns 0, or 2 with a message. */
@@ -115,6 +116,11 @@ int solver_init(solver *s, const config *cfg, char *err, size_t err_len);
  * process's share of the liquid in an MPI run, which never holds the whole (docs/mpi.md). */
 int solver_init_part(solver *s, const config *cfg, int part, int parts, char *err, size_t err_len);
 void solver_free(solver *s);
+/* The most strips of cells along x (core/cells.h) that a step's neighbour grid can have: the
+ * one of the thinnest skin, a liquid at rest; a faster flow has a thicker skin, larger cells
+ * and fewer strips. An MPI run gives each process whole strips (docs/mpi.md). 0 when out of
+ * memory. */
+size_t solver_strips_at_most(const solver *s);
 /* Room in the work arrays for n_fluid fluid particles (an MPI process's share changes from
  * step to step). Returns 0, or -1 when out of memory. */
 int solver_reserve(solver *s, size_t n_fluid);
