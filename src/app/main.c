@@ -219,6 +219,9 @@ static int vcsph_main(int argc, char **argv, const run_team *team)
         fprintf(stderr, "%s\n", err);
         return RUN_BAD_INPUT;
     }
+    /* the other commands are one process's work: rank 0 does them alone (`plot` would
+       otherwise write its files once per process) */
+    if (team && team->rank > 0 && args.command != CLI_RUN) return RUN_OK;
     if (args.command == CLI_HELP) {
         cli_usage(stdout);
         return RUN_OK;

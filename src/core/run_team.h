@@ -28,9 +28,9 @@ typedef struct run_team {
        Collective. */
     void *(*gather)(const struct run_team *t, const void *mine, size_t n, size_t size,
                     size_t *n_total);
-    /* Splits a solver of `dim` (a solver_2d or solver_3d) that every process has set up whole
-       among the processes, each keeping its share (parallel/mpi_domain.h); returns the split
-       for `unsplit`, NULL when out of memory. Collective. */
+    /* Splits a solver of `dim` (a solver_2d or solver_3d) among the processes, each keeping
+       its share: the one it set up alone (solver_init_part) or its part of the whole liquid
+       (parallel/mpi_domain.h). Returns the split for `unsplit`, NULL when out of memory. */
     void *(*split)(const struct run_team *t, int dim, void *solver);
     void (*unsplit)(int dim, void *split);
     void *context;
