@@ -225,41 +225,63 @@ int restart_save(run *r, const char *path, char *err, size_t err_len)
 
 /* ---- loading ----------------------------------------------------------------------------- */
 
+/* Copies rows first .. first + count - 1 of array `name`, checked for its type, length n and
+ * columns, into out. */
+static int take_rows(const checkpoint_data *cd, const char *name, checkpoint_type type, size_t n,
+                     size_t first, size_t count, const char *columns, void *out, char *err,
+                     size_t err_len)
+{
+    const checkpoint_array *a = checkpoint_find(cd, name, type, n, columns, err, err_len);
+    if (!a) return -1;
+    size_t size = checkpoint_type_size(type);
+    if (count > 0) memcpy(out, (const char *)a->data + first * size, count * size);
+    return 0;
+}
+
 /* Copies array `name`, checked for its type, length and columns, into out. */
 static int take(const checkpoint_data *cd, const char *name, checkpoint_type type, size_t n,
                 const char *columns, void *out, char *err, size_t err_len)
 {
-    const checkpoint_array *a = checkpoint_find(cd, name, type, n, columns, err, err_len);
-    if (!a) return -1;
-    if (n > 0) memcpy(out, a->data, n * checkpoint_type_size(type));
-    return 0;
+    return take_rows(cd, name, type, n, 0, n, columns, out, err, err_len);
 }
 
-static int load_particles(solver *s, const checkpoint_data *cd, char *err, size_t err_len)
+/* The fluid of the checkpoint, or with the solver split among a team this process's share of
+ * it (the rows of its part of the checkpoint's order, which is the global order: reduce_share,
+ * as solver_init_part set up its share of the lattice). */
+static int load_particles(run *r, const checkpoint_data *cd, char *err, size_t err_len)
 {
+    solver *s = &r->s;
     int64_t head[4];
     if (take(cd, "solver_i64", CHECKPOINT_I64, 4, SOLVER_I64, head, err, err_len)) return -1;
     particles *p = &s->p;
-    if (head[0] != DIM || head[1] != (int64_t)p->n_fluid) {
+    size_t n = (size_t)s->dv.n_fluid, first = 0, end = n;
+    if (head[0] != DIM || head[1] != (int64_t)n) {
         snprintf(err, err_len,
                  "it holds %lld particles in %lldD, where its case makes %zu in %dD (a "
                  "checkpoint of another case?)",
-                 (long long)head[1], (long long)head[0], p->n_fluid, DIM);
+                 (long long)head[1], (long long)head[0], n, DIM);
         return -1;
     }
-    size_t n = p->n_fluid;
+    if (r->split) reduce_share(n, r->team->rank, r->team->size, &first, &end);
+    if (p->n_fluid != end - first) {
+        snprintf(err, err_len, "this process holds %zu particles, not its share of %zu", p->n_fluid,
+                 end - first);
+        return -1;
+    }
     s->step = head[2];
     s->n_edbc = head[3];
     int rc = 0;
+    size_t count = end - first;
 #define TAKE_SCALAR(type, name, flags, snapshot, comment)                                          \
     if ((flags)&FIELD_STATE && rc == 0)                                                            \
-        rc = take(cd, #name, STATE_ITEM_TYPE(type), n, NULL, p->name, err, err_len);
+        rc = take_rows(cd, #name, STATE_ITEM_TYPE(type), n, first, count, NULL, p->name, err,      \
+                       err_len);
 #define TAKE_VECTOR(type, name, flags, snapshot, comment)                                          \
     for (int d = 0; d < DIM && (flags)&FIELD_STATE && rc == 0; d++)                                \
-        rc = take(cd, COMPONENT_NAME(name, d), STATE_ITEM_TYPE(type), n, NULL, p->name[d], err,    \
-                  err_len);
+        rc = take_rows(cd, COMPONENT_NAME(name, d), STATE_ITEM_TYPE(type), n, first, count, NULL,  \
+                       p->name[d], err, err_len);
     PARTICLE_FIELDS(TAKE_SCALAR, TAKE_VECTOR)
-    p->n_total = n; /* the ghosts are made again by the next solver_prepare */
+    p->n_total = p->n_fluid; /* the ghosts are made again by the next solver_prepare */
     return rc ? -1 : 0;
 }
 
@@ -368,14 +390,17 @@ static bool all_finite(const double *v, size_t n)
     return true;
 }
 
-/* The ids are 0 .. n-1 in some order (the lattice numbers them; a run only reorders them). */
-static bool ids_are_a_permutation(const particles *p)
+/* The checkpoint's ids are 0 .. n-1 in some order (the lattice numbers them; a run only
+ * reorders them), all of them, also where this process loaded its share alone. */
+static bool ids_are_a_permutation(const checkpoint_data *cd, size_t n)
 {
-    size_t n = p->n_fluid;
+    char err[256];
+    const checkpoint_array *a = checkpoint_find(cd, "id", CHECKPOINT_I64, n, NULL, err, sizeof err);
+    const int64_t *ids = a ? a->data : NULL;
     unsigned char *seen = calloc(n ? n : 1, 1);
-    bool ok = seen != NULL;
+    bool ok = ids && seen;
     for (size_t i = 0; i < n && ok; i++) {
-        int64_t id = p->id[i];
+        int64_t id = ids[i];
         ok = id >= 0 && (uint64_t)id < n && !seen[id];
         if (ok) seen[id] = 1;
     }
@@ -387,7 +412,7 @@ static bool ids_are_a_permutation(const particles *p)
  * passed the health check (simulation.c), with counters that only grow from their start. A
  * file that fails this passed the header's hash, so it was made on purpose or by another
  * program; it is refused before the run indexes arrays or divides by what it holds. */
-static int check_state(const run *r, char *err, size_t err_len)
+static int check_state(const run *r, const checkpoint_data *cd, char *err, size_t err_len)
 {
     const solver *s = &r->s;
     const eta_controller *e = &s->eta_control;
@@ -421,7 +446,7 @@ static int check_state(const run *r, char *err, size_t err_len)
         why = "a negative time, step or count, or no mass or volume";
     else if (!(e->eta >= 0.0 && e->eta <= 1.0) || e->n_samples < 0 || e->switches < 0)
         why = "an eta outside [0, 1] or a negative count of the eta control";
-    else if (!ids_are_a_permutation(&s->p))
+    else if (!ids_are_a_permutation(cd, (size_t)s->dv.n_fluid))
         why = "particle ids that are not 0 .. n-1";
     else if (solver_health(s, health, sizeof health)) {
         snprintf(failed, sizeof failed, "particles that fail the health check (%s)", health);
@@ -437,9 +462,9 @@ static int check_state(const run *r, char *err, size_t err_len)
 int restart_load(run *r, const checkpoint_data *cd, char *err, size_t err_len)
 {
     solver *s = &r->s;
-    if (load_particles(s, cd, err, err_len) || load_f64_scalars(r, cd, err, err_len) ||
+    if (load_particles(r, cd, err, err_len) || load_f64_scalars(r, cd, err, err_len) ||
         load_eta_control(&s->eta_control, cd, err, err_len) || load_outputs(r, cd, err, err_len) ||
-        check_state(r, err, err_len))
+        check_state(r, cd, err, err_len))
         return -1;
     if (s->t > r->cfg->t_end) {
         snprintf(err, err_len, "case.t_end = %g s is before the checkpoint's time, t = %.9g s",

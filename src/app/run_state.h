@@ -167,8 +167,10 @@ int run_reserve_snapshots(run *r, int n);
 int restart_save(run *r, const char *path, char *err, size_t err_len);
 
 /* Takes a run's state from a checkpoint read whole (checkpoint_read) into r, set up by
- * solver_init for the checkpoint's case. Touches no file. Returns 0, or -1 with a message
- * when the checkpoint does not fit the case (particle count, dimension, layout). */
+ * solver_init for the checkpoint's case; with the solver split among a team (solver_init_part
+ * and the split), this process's share of the particles. Touches no file. Returns 0, or -1
+ * with a message when the checkpoint does not fit the case (particle count, dimension,
+ * layout). */
 int restart_load(run *r, const checkpoint_data *cd, char *err, size_t err_len);
 
 /* Checks, touching nothing, that every CSV file the checkpoint recorded exists in the output

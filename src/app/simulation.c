@@ -340,10 +340,11 @@ static int split_solver(run *r, char *err, size_t err_len)
 }
 
 /* The solver of cfg, and the state of checkpoint cd loaded into it unless cd is NULL. Touches
- * no file. With a team, split among its processes: a fresh run's process sets up its share of
- * the lattice alone, a restarted one reads the whole checkpoint and then keeps its share.
- * Returns RUN_OK, solver_init's status, or RUN_BAD_INPUT for a checkpoint that does not fit,
- * with a message in err, the same on every process; close_run(r) in every case. */
+ * no file. With a team, split among its processes, each setting up its share of the lattice
+ * alone and loading its share of the checkpoint (which every process reads whole). Returns
+ * RUN_OK, solver_init's status, or RUN_BAD_INPUT for a checkpoint that does not fit, with a
+ * message in err (the lowest failing rank's), the same on every process; close_run(r) in
+ * every case. */
 static int set_up_run(run *r, const config *cfg, const run_team *team, const checkpoint_data *cd,
                       char *err, size_t err_len)
 {
@@ -351,16 +352,15 @@ static int set_up_run(run *r, const config *cfg, const run_team *team, const che
     r->lock_fd = -1;
     r->cfg = cfg;
     r->team = team;
-    bool share = team && !cd;
     int status =
-        solver_init_part(&r->s, cfg, share ? team->rank : 0, share ? team->size : 1, err, err_len);
+        solver_init_part(&r->s, cfg, team ? team->rank : 0, team ? team->size : 1, err, err_len);
     if (status == RUN_OK && team) status = check_strips(r, err, err_len);
-    if (status == RUN_OK && share) status = split_solver(r, err, err_len);
+    if (status == RUN_OK && team) status = split_solver(r, err, err_len);
     if ((status = team_agree(team, status))) return status;
     /* the initial lattice's raster, before a checkpoint's state replaces it */
     if (run_graphical_reference(r, err, err_len)) status = RUN_FAILED;
     if (status == RUN_OK && cd && restart_load(r, cd, err, err_len)) status = RUN_BAD_INPUT;
-    if (status == RUN_OK && cd && team) status = split_solver(r, err, err_len);
+    team_first_message(team, status != RUN_OK, err, err_len);
     return team_agree(team, status);
 }
 
