@@ -29,11 +29,12 @@ static const char timeseries_header[] =
     "rho_min,rho_max,esurf,work_st,deps_u,deps_du,deps_corr,angmom_x,angmom_y,angmom_z,"
     "work_moves";
 
-/* The fields the probes read, and tank_refresh_ghosts to make the walls' images they read. */
+/* The fields the probes read, and those tank_make_ghosts and tank_refresh_ghosts read to
+ * make the walls' images the probes read. */
 static bool probe_field(const char *snapshot)
 {
-    static const char *const names[] = {"position", "velocity", "pressure",
-                                        "density",  "mass",     "volume"};
+    static const char *const names[] = {"id",      "position", "velocity", "pressure",
+                                        "density", "mass",     "volume"};
     for (size_t k = 0; snapshot && k < sizeof names / sizeof names[0]; k++)
         if (!strcmp(snapshot, names[k])) return true;
     return false;
@@ -70,11 +71,7 @@ void run_gather(const run *r, const particles *p, run_gather_kind which, particl
 
 void run_gathered_free(const run *r, particles *whole)
 {
-    if (!r->split) return;
-#define FREE_SCALAR(type, name, flags, snapshot, comment) free(whole->name);
-#define FREE_VECTOR(type, name, flags, snapshot, comment)                                          \
-    for (int d = 0; d < DIM; d++) free(whole->name[d]);
-    PARTICLE_FIELDS(FREE_SCALAR, FREE_VECTOR)
+    if (r->split) particles_free(whole); /* its own copies (no arrays: nothing) */
 }
 
 void run_out_path(const run *r, char *buf, size_t len, const char *name)
@@ -98,7 +95,7 @@ static int graphical_volume(run *r, double *volume, char *err, size_t err_len)
     particles whole;
     run_gather(r, &s->p, RUN_GATHER_POSITIONS, &whole);
     *volume = 0.0;
-    int failed = (!r->split || team_writes(r->team)) &&
+    int failed = team_writes(r->team) &&
                  volume_graphical(&whole, s->tank.size, &s->dv, volume, err, err_len);
     run_gathered_free(r, &whole);
     return failed ? -1 : 0;
@@ -152,31 +149,23 @@ static double dissipated_energy(run *r, double energy)
 static double surface_loss(run *r, double esurf) { return -(r->s.work_st + esurf); }
 
 /* On a split solver, the liquid and its walls' images as one process holds them, for the
- * probes, on the process that writes: the fluid gathered in the global order, its images
- * made again at this state as solver_prepare made them (a process's own images would miss
- * the other processes' and its halo's would count twice). Returns 0, or -1 when out of
- * memory. */
+ * probes, on the process that writes: the fluid gathered in the global order into q, its
+ * images made again at this state as solver_prepare made them (a process's own images would
+ * miss the other processes' and its halo's would count twice). Free q with
+ * run_gathered_free. Returns 0, or -1 when out of memory. */
 static int rebuild_whole(run *r, particles *q)
 {
     solver *s = &r->s;
-    particles whole;
-    run_gather(r, &s->p, RUN_GATHER_PROBES, &whole);
-    size_t n = whole.n_fluid;
-    int failed = team_writes(r->team) && particles_init(q, n + n / 2 + 64);
-    if (team_writes(r->team) && !failed) {
-#define COPY_SCALAR(type, name, flags, snapshot, comment)                                          \
-    if (probe_field(snapshot)) memcpy(q->name, whole.name, n * sizeof *q->name);
-#define COPY_VECTOR(type, name, flags, snapshot, comment)                                          \
-    if (probe_field(snapshot))                                                                     \
-        for (int d = 0; d < DIM; d++) memcpy(q->name[d], whole.name[d], n * sizeof *q->name[d]);
-        PARTICLE_FIELDS(COPY_SCALAR, COPY_VECTOR)
-        q->n_fluid = q->n_total = n;
-        tank_frame frame = solver_frame(s, s->t);
-        failed = tank_make_ghosts(&s->tank, q, 2.0 * s->dv.h + s->skin);
-        if (!failed) tank_refresh_ghosts(&s->tank, q, &frame, s->pp.rho0, s->pp.c0);
-    }
-    run_gathered_free(r, &whole);
-    return failed ? -1 : 0;
+    run_gather(r, &s->p, RUN_GATHER_PROBES, q);
+    if (!team_writes(r->team)) return 0;
+    /* room for the images; the fields not gathered get their arrays here */
+    size_t n = q->n_fluid;
+    if (particles_reserve(q, n + n / 2 + 64) ||
+        tank_make_ghosts(&s->tank, q, 2.0 * s->dv.h + s->skin))
+        return -1;
+    tank_frame frame = solver_frame(s, s->t);
+    tank_refresh_ghosts(&s->tank, q, &frame, s->pp.rho0, s->pp.c0);
+    return 0;
 }
 
 /* One row of probes.csv: t, then the gauges, then the pressure probes (docs/case-file.md). */
@@ -185,15 +174,14 @@ void run_write_probes_row(run *r)
     const config *cfg = r->cfg;
     particles rebuilt;
     const particles *p = &r->s.p;
+    int failed = 0;
     if (r->split) {
-        if (rebuild_whole(r, &rebuilt)) {
-            log_error("vcsph: probes: out of memory; probes.csv misses t = %.9g s", r->s.t);
-            if (team_writes(r->team)) particles_free(&rebuilt);
-            return;
-        }
+        failed = rebuild_whole(r, &rebuilt);
         p = &rebuilt;
     }
-    if (team_writes(r->team)) {
+    if (failed)
+        log_error("vcsph: probes: out of memory; probes.csv misses t = %.9g s", r->s.t);
+    else if (team_writes(r->team)) {
         csv_file *c = &r->probes_csv;
         csv_put(c, r->s.t);
         for (int k = 0; k < cfg->n_gauges; k++)
@@ -205,7 +193,7 @@ void run_write_probes_row(run *r)
         }
         csv_end_row(c);
     }
-    if (r->split && team_writes(r->team)) particles_free(&rebuilt);
+    if (r->split) run_gathered_free(r, &rebuilt);
 }
 
 /* One row of loads.csv: t, the force and the moment about motion.center in the tank's axes,

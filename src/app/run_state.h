@@ -111,7 +111,7 @@ static inline double run_period_end(const run *r) { return (double)r->period * r
 
 /* What run_gather brings together: the positions; the fields of a snapshot (docs/outputs.md);
  * the state a checkpoint keeps (FIELD_STATE); what the probes and the walls' images they read
- * need (position, velocity, pressure, density, mass, volume). */
+ * need (id, position, velocity, pressure, density, mass, volume). */
 typedef enum {
     RUN_GATHER_POSITIONS,
     RUN_GATHER_SNAPSHOT,

@@ -133,9 +133,9 @@ static int prepare(run *r)
     progress_clear(&r->pr);
     if (r->team)
         log_error("vcsph: out of memory at step %ld, or the liquid cannot be split among %d "
-                  "processes: each takes whole strips of 16 cells along x, and there are fewer "
+                  "processes: each takes whole strips of %d cells along x, and there are fewer "
                   "strips (docs/mpi.md); run on fewer processes",
-                  r->s.step, r->team->size);
+                  r->s.step, r->team->size, CELL_STRIP);
     else
         log_error("vcsph: out of memory at step %ld (or more than 2^31 - 1 particles with the "
                   "ghosts)",

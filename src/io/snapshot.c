@@ -269,10 +269,10 @@ static int write_vertices(hid_t file, const rows_part *part)
     const size_t n = part->n, block = n < INTERLEAVE_ROWS ? n : INTERLEAVE_ROWS;
     void *buf = n > 0 ? malloc(block * field_elem_size(type)) : NULL;
     int rc = (n > 0 && !buf) ? -1 : 0;
-    for (size_t row0 = part->first; rc == 0 && row0 < part->first + n; row0 += block) {
-        const size_t rows = part->first + n - row0 < block ? part->first + n - row0 : block;
-        fill_vertices(buf, type, row0, rows);
-        rc = write_rows(dset, type, 1, row0, rows, buf);
+    for (size_t row0 = 0; rc == 0 && row0 < n; row0 += block) {
+        const size_t rows = n - row0 < block ? n - row0 : block;
+        fill_vertices(buf, type, part->first + row0, rows);
+        rc = write_rows(dset, type, 1, part->first + row0, rows, buf);
     }
     free(buf);
     if (H5Dclose(dset) < 0) rc = -1;
