@@ -1,7 +1,8 @@
 /* Tests of the graphical method, Eq. (15) (sec. 3.2; theory §9): the raster against a
  * brute-force evaluation of its rule, lattice blocks at rest read eps_GM = 0, a disc (ball) of
  * lattice particles and a compressed block read their volume, a lone particle keeps its disc,
- * separated blobs are not bridged, and the count does not depend on the thread count.
+ * separated blobs are not bridged, the count does not depend on the thread count, and a
+ * raster drawn in parts along x counts what the whole raster counts.
  * The figures of docs/graphical-method.md come from raster_tables.c. */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -273,6 +274,61 @@ static void test_thread_count(void **state)
     }
 }
 
+/* ---- parts ------------------------------------------------------------------------------- */
+
+/* The raster drawn in parts along x, as the processes of an MPI run draw it (docs/mpi.md):
+ * each part from only the particles within a cell of it (the own particles and the halo of a
+ * process, cells of 2.3 dr against the raster's reach of 2 dr), in their order, with the walls
+ * at both ends and near-threshold pixels at the cuts of a disordered block. The parts' counts
+ * must add up to the whole raster's count, kind by kind, and the volume must be the same
+ * double: each pixel sums the same sources in the same order. Checked to fail by dropping the
+ * particles within reach on one side (the sum then misses pixels at every cut). */
+static void test_parts_add_up(void **state)
+{
+    (void)state;
+    for (int dim = 2; dim <= 3; dim++) {
+        raster_params rp = raster_params_default(dim);
+        cloud c;
+        cloud_init(&c);
+        int n[3] = {dim == 3 ? 24 : 60, 12, 8};
+        double size[3] = {(n[0] + 0.37) * dr, 20.13 * dr, (n[2] + 0.71) * dr};
+        add_block(&c, dim, n, dr, (double[3]){0.0, 0.0, 0.0});
+        uint64_t seed = 5;
+        for (size_t i = 0; i < c.n; i++)
+            for (int d = 0; d < dim; d++) c.x[d][i] += 0.3 * dr * noise(&seed);
+        raster_count whole, part;
+        char err[256];
+        if (raster_count_part(dim, c.n, c.x, dr, size, &rp, -INFINITY, INFINITY, &whole, err,
+                              sizeof err))
+            fail_msg("%s", err);
+        double cell = 2.3 * dr;
+        assert_true(raster_reach(&rp, dr) <= cell);
+        /* cuts at odd places (one on a pixel edge) and an empty part */
+        const double cuts[] = {-INFINITY, 7.31 * dr, 7.31 * dr, 12.0 * dr, 17.77 * dr, INFINITY};
+        const int n_parts = (int)(sizeof cuts / sizeof cuts[0]) - 1;
+        unsigned long long sum[8] = {0};
+        cloud near;
+        cloud_init(&near);
+        for (int k = 0; k < n_parts; k++) {
+            near.n = 0;
+            for (size_t i = 0; i < c.n; i++)
+                if (c.x[0][i] >= cuts[k] - cell && c.x[0][i] < cuts[k + 1] + cell)
+                    cloud_add(&near, c.x[0][i], c.x[1][i], c.x[2][i]);
+            if (raster_count_part(dim, near.n, near.x, dr, size, &rp, cuts[k], cuts[k + 1], &part,
+                                  err, sizeof err))
+                fail_msg("%s", err);
+            for (int kind = 0; kind < 8; kind++) sum[kind] += part.count[kind];
+        }
+        for (int kind = 0; kind < 8; kind++) assert_true(sum[kind] == whole.count[kind]);
+        memcpy(part.count, sum, sizeof sum);
+        double v_whole = raster_count_volume(&whole), v_parts = raster_count_volume(&part);
+        printf("%dD: whole %.17g, %d parts %.17g\n", dim, v_whole, n_parts, v_parts);
+        assert_true(v_whole == v_parts);
+        cloud_free(&near);
+        cloud_free(&c);
+    }
+}
+
 /* ---- bad input ---------------------------------------------------------------------------- */
 
 static void test_bad_input(void **state)
@@ -311,6 +367,7 @@ int main(void)
         cmocka_unit_test(test_compressed_block),
         cmocka_unit_test(test_blobs_not_bridged),
         cmocka_unit_test(test_thread_count),
+        cmocka_unit_test(test_parts_add_up),
         cmocka_unit_test(test_bad_input),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -87,9 +87,9 @@ void run_event(run *r, const char *what, const char *detail)
     csv_end_row(&r->events);
 }
 
-/* The graphical method's volume of the whole liquid: on a split solver, drawn by the process
- * that writes from the gathered positions (the others get 0 and never use it). */
-static int graphical_volume(run *r, double *volume, char *err, size_t err_len)
+/* The graphical method's volume of the whole liquid from positions gathered on the process
+ * that writes, handed to every process (the largest of theirs: the others draw nothing). */
+static int gathered_graphical_volume(run *r, double *volume, char *err, size_t err_len)
 {
     solver *s = &r->s;
     particles whole;
@@ -98,7 +98,31 @@ static int graphical_volume(run *r, double *volume, char *err, size_t err_len)
     int failed = team_writes(r->team) &&
                  volume_graphical(&whole, s->tank.size, &s->dv, volume, err, err_len);
     run_gathered_free(r, &whole);
-    return failed ? -1 : 0;
+    if (team_first_message(r->team, failed, err, err_len)) return -1;
+    *volume = reducer_max(solver_reducer(s), volume, 1);
+    return 0;
+}
+
+/* The graphical method's volume of the whole liquid. A split solver's processes each draw the
+ * pixels of their own part of the tank along x from their particles and halo, and their
+ * counts are summed: the whole raster's count, each pixel summing the same sources in the
+ * same order (raster_count_part). Before the first step has distributed the particles (the
+ * initial lattice's count, at set-up) there are no parts yet, and rank 0 draws them all. */
+static int graphical_volume(run *r, double *volume, char *err, size_t err_len)
+{
+    solver *s = &r->s;
+    double lo = -INFINITY, hi = INFINITY;
+    size_t n_halo_before = 0;
+    if (r->split && s->domain->part_along_x(s->domain, s, &lo, &hi, &n_halo_before))
+        return gathered_graphical_volume(r, volume, err, err_len);
+    raster_count c;
+    int failed =
+        volume_graphical_part(&s->p, n_halo_before, lo, hi, s->tank.size, &s->dv, &c, err, err_len);
+    if (team_first_message(r->team, failed, err, err_len)) return -1;
+    for (int kind = 0; kind < 8; kind++)
+        c.count[kind] = (unsigned long long)reducer_total(solver_reducer(s), (long)c.count[kind]);
+    *volume = raster_count_volume(&c);
+    return 0;
 }
 
 /* The graphical method, Eq. (15): eps_GM of the current positions (sec. 3.2) against the

@@ -20,7 +20,12 @@
  *
  * Scatter parallel over layers of the outermost axis (rows in 2D, planes in 3D): every pixel
  * is written by one thread, summing its sources in one fixed order, and the count is an
- * integer, so the result does not depend on the number of threads. */
+ * integer, so the result does not depend on the number of threads.
+ *
+ * A part of the raster (raster_count_part) is a range of pixel columns along x: its grid holds
+ * only those columns, and only the sources within reach of them are kept. The sources keep
+ * their order (by bin, then by index), so each of its pixels sums what the whole raster's
+ * pixel sums, in the same order, when the particles are given in their global order. */
 #include "diag/raster.h"
 
 #include <limits.h>
@@ -37,7 +42,9 @@ raster_params raster_params_default(int dim)
 
 typedef struct {
     int dim;
-    int nn[3];      /* pixels per axis (1 past dim) */
+    int nn[3];      /* pixels per axis (1 past dim); along x, those of the part drawn */
+    int x_first;    /* the first pixel column of the part drawn ... */
+    int nx_all;     /* ... of all the box's columns along x */
     double h[3];    /* pixel side per axis, m */
     double size[3]; /* the walls: at 0 and size (nn h, or less when the last layer is cut) */
     double last[3]; /* the part of the last layer inside the box, in (0, 1] */
@@ -66,12 +73,13 @@ static inline float pixel_weight(const source_weight *sw, double r2)
     return (float)w;
 }
 
-/* Pixels i of an axis whose centres (i + 1/2) h lie in [lo, hi], clipped to [0, n). */
-static inline void pixel_range(double lo, double hi, double h, int n, int *first, int *last)
+/* Pixels i of an axis whose centres (i + 1/2) h lie in [lo, hi], clipped to [from, to). */
+static inline void pixel_range(double lo, double hi, double h, int from, int to, int *first,
+                               int *last)
 {
     double a = ceil(lo / h - 0.5), b = floor(hi / h - 0.5);
-    *first = a < 0.0 ? 0 : (a > n ? n : (int)a);
-    *last = b >= n ? n - 1 : (b < -1.0 ? -1 : (int)b);
+    *first = a < from ? from : (a > to ? to : (int)a);
+    *last = b >= to ? to - 1 : (b < from - 1.0 ? from - 1 : (int)b);
 }
 
 enum { MAX_IMAGES = 27 }; /* 3 per axis: the particle, its image about the low wall, the high */
@@ -115,11 +123,22 @@ static void sources_free(sources *s)
     for (int d = 0; d < 3; d++) free(s->x[d]);
 }
 
-static int sources_make(const grid *g, size_t n, double *const x[3], double reach, sources *s)
+/* Whether a source at x along x reaches a pixel of the part [x_lo, x_hi) of the raster. */
+static inline int reaches_part(double x, double x_lo, double x_hi, double reach)
+{
+    return x >= x_lo - reach && x <= x_hi + reach;
+}
+
+/* The particles' images within reach of the part [x_lo, x_hi), in the particles' order. */
+static int sources_make(const grid *g, size_t n, double *const x[3], double reach, double x_lo,
+                        double x_hi, sources *s)
 {
     double img[MAX_IMAGES][3];
     s->count = 0;
-    for (size_t i = 0; i < n; i++) s->count += (size_t)particle_images(g, x, i, reach, img);
+    for (size_t i = 0; i < n; i++) {
+        int k = particle_images(g, x, i, reach, img);
+        for (int c = 0; c < k; c++) s->count += (size_t)reaches_part(img[c][0], x_lo, x_hi, reach);
+    }
     for (int d = 0; d < 3; d++) s->x[d] = malloc((s->count ? s->count : 1) * sizeof(double));
     if (!s->x[0] || !s->x[1] || !s->x[2]) {
         sources_free(s);
@@ -128,8 +147,11 @@ static int sources_make(const grid *g, size_t n, double *const x[3], double reac
     size_t m = 0;
     for (size_t i = 0; i < n; i++) {
         int k = particle_images(g, x, i, reach, img);
-        for (int c = 0; c < k; c++, m++)
+        for (int c = 0; c < k; c++) {
+            if (!reaches_part(img[c][0], x_lo, x_hi, reach)) continue;
             for (int d = 0; d < 3; d++) s->x[d][m] = img[c][d];
+            m++;
+        }
     }
     return 0;
 }
@@ -179,7 +201,8 @@ static int scatter(const grid *g, float *F, const sources *s, double reach, cons
             int row0 = 0, row1 = 0;
             if (g->dim == 3) {
                 double half = sqrt(left);
-                pixel_range(s->x[1][i] - half, s->x[1][i] + half, g->h[1], g->nn[1], &row0, &row1);
+                pixel_range(s->x[1][i] - half, s->x[1][i] + half, g->h[1], 0, g->nn[1], &row0,
+                            &row1);
             }
             for (int row = row0; row <= row1; row++) {
                 double dy = g->dim == 3 ? (row + 0.5) * g->h[1] - s->x[1][i] : 0.0;
@@ -187,11 +210,12 @@ static int scatter(const grid *g, float *F, const sources *s, double reach, cons
                 if (chord < 0.0) continue;
                 double half = sqrt(chord);
                 int first, last;
-                pixel_range(s->x[0][i] - half, s->x[0][i] + half, g->h[0], g->nn[0], &first, &last);
+                pixel_range(s->x[0][i] - half, s->x[0][i] + half, g->h[0], g->x_first,
+                            g->x_first + g->nn[0], &first, &last);
                 float *line = lay + (size_t)row * g->nn[0];
                 for (int c = first; c <= last; c++) {
                     double dx = (c + 0.5) * g->h[0] - s->x[0][i];
-                    line[c] += pixel_weight(sw, dx * dx + r2_row);
+                    line[c - g->x_first] += pixel_weight(sw, dx * dx + r2_row);
                 }
             }
         }
@@ -209,20 +233,37 @@ static int fail(char *err, size_t err_len, const char *msg)
 }
 
 /* The pixels with F >= 1/2 into count[kind], kind's bit d set on the last layer of axis d. */
-static void count_liquid(const grid *g, const float *F, size_t count[8])
+static void count_liquid(const grid *g, const float *F, unsigned long long count[8])
 {
 #pragma omp parallel for schedule(static) reduction(+ : count[:8])
     for (size_t p = 0; p < g->total; p++) {
         if (!(F[p] >= 0.5f)) continue;
-        int kind = 0;
-        for (int d = 0; d < g->dim; d++)
+        int kind = g->x_first + (int)(p % (size_t)g->nn[0]) == g->nx_all - 1 ? 1 : 0;
+        for (int d = 1; d < g->dim; d++)
             if ((int)(p / g->stride[d] % (size_t)g->nn[d]) == g->nn[d] - 1) kind |= 1 << d;
         count[kind]++;
     }
 }
 
-int raster_volume(int dim, size_t n, double *const x[3], double dr, const double size[3],
-                  const raster_params *rp, double *volume, char *err, size_t err_len)
+double raster_reach(const raster_params *rp, double dr)
+{
+    return fmax(2.0 * rp->smoothing * dr, rp->radius * dr);
+}
+
+/* The pixel columns along x whose centres lie in [x_lo, x_hi): g->x_first and g->nn[0], out
+ * of the g->nx_all of the box. The parts of processes that share a bound agree on it. */
+static void part_columns(grid *g, double x_lo, double x_hi)
+{
+    double first = ceil(x_lo / g->h[0] - 0.5), end = ceil(x_hi / g->h[0] - 0.5);
+    first = fmin(fmax(first, 0.0), g->nx_all);
+    end = fmin(fmax(end, first), g->nx_all);
+    g->x_first = (int)first;
+    g->nn[0] = (int)end - g->x_first;
+}
+
+int raster_count_part(int dim, size_t n, double *const x[3], double dr, const double size[3],
+                      const raster_params *rp, double x_lo, double x_hi, raster_count *c, char *err,
+                      size_t err_len)
 {
     if (dim != 2 && dim != 3) return fail(err, err_len, "dim must be 2 or 3");
     if (!(dr > 0.0 && isfinite(dr))) return fail(err, err_len, "dr must be positive");
@@ -233,6 +274,8 @@ int raster_volume(int dim, size_t n, double *const x[3], double dr, const double
         return fail(err, err_len, "smoothing length must be 0 or positive");
     if (rp->radius == 0.0 && rp->smoothing == 0.0)
         return fail(err, err_len, "a disc radius or a smoothing length is needed");
+    if (isnan(x_lo) || isnan(x_hi) || x_lo > x_hi)
+        return fail(err, err_len, "the part's range along x is not a range");
     for (size_t i = 0; i < n; i++)
         for (int d = 0; d < dim; d++)
             if (!isfinite(x[d][i])) return fail(err, err_len, "particle position not finite");
@@ -259,10 +302,17 @@ int raster_volume(int dim, size_t n, double *const x[3], double dr, const double
         g.stride[d] = g.total;
         g.total *= (size_t)g.nn[d];
     }
-    double pixel_volume = g.h[0] * g.h[1] * (dim == 3 ? g.h[2] : 1.0);
+    /* the part: its columns along x only (a stride along x is 1 for any number of them) */
+    g.nx_all = g.nn[0];
+    part_columns(&g, x_lo, x_hi);
+    g.total = g.total / (size_t)g.nx_all * (size_t)g.nn[0];
+    for (int d = 1; d < dim; d++) g.stride[d] = g.stride[d] / (size_t)g.nx_all * (size_t)g.nn[0];
+
+    *c = (raster_count){.dim = dim, .last = {g.last[0], g.last[1], g.last[2]}};
+    c->pixel_volume = g.h[0] * g.h[1] * (dim == 3 ? g.h[2] : 1.0);
 
     double hc = rp->smoothing * dr, rd = rp->radius * dr;
-    double reach = fmax(2.0 * hc, rd);
+    double reach = raster_reach(rp, dr);
     double ratio = hc > 0.0 ? dr / hc : 0.0;
     double volume_ratio = rp->particle_volume > 0.0 ? rp->particle_volume / pow(dr, dim) : 1.0;
     source_weight sw = {
@@ -271,29 +321,42 @@ int raster_volume(int dim, size_t n, double *const x[3], double dr, const double
                                          : 21.0 / (16.0 * M_PI) * ratio * ratio * ratio),
         .disc2 = rd * rd,
     };
+    if (g.total == 0) return 0; /* no pixel centre in the part */
     float *F = malloc(g.total * sizeof *F);
     sources s;
-    int status = F ? sources_make(&g, n, x, reach, &s) : -1;
+    int status = F ? sources_make(&g, n, x, reach, x_lo, x_hi, &s) : -1;
     if (!status) {
         status = scatter(&g, F, &s, reach, &sw);
         sources_free(&s);
     }
-    /* liquid pixels counted per kind, bit d set for the last layer of axis d, whose part
-       inside the box weighs; integers, so the volume is the same for any thread count */
-    size_t count[8] = {0};
-    if (!status) count_liquid(&g, F, count);
+    /* liquid pixels counted per kind: integers, the same for any thread count */
+    if (!status) count_liquid(&g, F, c->count);
     free(F);
     if (status) {
         snprintf(err, err_len, "graphical method: out of memory (%zu pixels)", g.total);
         return -1;
     }
+    return 0;
+}
+
+double raster_count_volume(const raster_count *c)
+{
     double pixels = 0.0;
-    for (int kind = 0; kind < 1 << dim; kind++) {
+    for (int kind = 0; kind < 1 << c->dim; kind++) {
         double weight = 1.0;
-        for (int d = 0; d < dim; d++)
-            if (kind >> d & 1) weight *= g.last[d];
-        pixels += (double)count[kind] * weight;
+        for (int d = 0; d < c->dim; d++)
+            if (kind >> d & 1) weight *= c->last[d];
+        pixels += (double)c->count[kind] * weight;
     }
-    *volume = pixels * pixel_volume;
+    return pixels * c->pixel_volume;
+}
+
+int raster_volume(int dim, size_t n, double *const x[3], double dr, const double size[3],
+                  const raster_params *rp, double *volume, char *err, size_t err_len)
+{
+    raster_count c;
+    if (raster_count_part(dim, n, x, dr, size, rp, -INFINITY, INFINITY, &c, err, err_len))
+        return -1;
+    *volume = raster_count_volume(&c);
     return 0;
 }

@@ -39,4 +39,30 @@ raster_params raster_params_default(int dim);
 int raster_volume(int dim, size_t n, double *const x[3], double dr, const double size[3],
                   const raster_params *rp, double *volume, char *err, size_t err_len);
 
+/* The liquid pixels of a raster, or of a part of it, by kind (bit d set: on the last layer of
+ * axis d, which counts with its part inside the box), and what turns them into a volume.
+ * Counts are integers: the parts of a raster drawn by several processes add up exactly. */
+typedef struct {
+    int dim;
+    unsigned long long count[8];
+    double last[3];      /* the part of the last layer of each axis inside the box */
+    double pixel_volume; /* m^n */
+} raster_count;
+
+/* How far from a particle its discs and colour function reach (m). */
+double raster_reach(const raster_params *rp, double dr);
+
+/* raster_volume's liquid pixels whose centres lie at x in [x_lo, x_hi) (x along axis 0;
+ * -INFINITY and INFINITY for the whole box): the part of the raster that one process draws
+ * when the liquid is split along x among processes (docs/mpi.md). The particles given must
+ * hold every particle within raster_reach of that range, in their global order (a process's
+ * left halo, its own particles, its right halo); each pixel then sums the same sources in
+ * the same order as the whole raster does, and the parts' counts add up to its count. */
+int raster_count_part(int dim, size_t n, double *const x[3], double dr, const double size[3],
+                      const raster_params *rp, double x_lo, double x_hi, raster_count *c, char *err,
+                      size_t err_len);
+
+/* The covered volume of counted pixels (m^n). */
+double raster_count_volume(const raster_count *c);
+
 #endif

@@ -5,6 +5,11 @@
 #include "diag/raster.h"
 #include "core/pair.h"
 
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
 typedef enum { MEASURE_KERNEL, MEASURE_GAMMA, MEASURE_LAMBDA } measure;
 
 /* One particle's share, 1 on S_F: Vgeo_i / dr^n (Eq. 12), Gamma_i (A.2), lambda_i (A.3). */
@@ -75,17 +80,55 @@ void volume_rate(const kernel *k, const particles *p, const neighbour_list *nl, 
     out->correction = interior_rate(k, p, nl, p->correction, v0, scratch, r);
 }
 
-int volume_graphical(const particles *p, const double size[DIM], const derived *dv, double *volume,
-                     char *err, size_t err_len)
+/* The rule of raster_params_default with the lattice's particle volume and spacing. */
+static raster_params graphical_params(const derived *dv)
 {
     raster_params rp = raster_params_default(DIM);
     rp.particle_volume = dv->cell_volume;
     for (int d = 0; d < DIM; d++) rp.spacing[d] = dv->spacing[d];
-    double dr = dv->dr;
+    return rp;
+}
+
+int volume_graphical(const particles *p, const double size[DIM], const derived *dv, double *volume,
+                     char *err, size_t err_len)
+{
+    raster_count c;
+    if (volume_graphical_part(p, 0, -INFINITY, INFINITY, size, dv, &c, err, err_len)) return -1;
+    *volume = raster_count_volume(&c);
+    return 0;
+}
+
+int volume_graphical_part(const particles *p, size_t n_halo_before, double x_lo, double x_hi,
+                          const double size[DIM], const derived *dv, raster_count *c, char *err,
+                          size_t err_len)
+{
+    raster_params rp = graphical_params(dv);
+    size_t n_own = p->n_fluid, n_halo = p->n_halo, n = n_own + n_halo;
     double *x[3] = {NULL, NULL, NULL}, box[3] = {0.0, 0.0, 0.0};
+    int failed = 0;
     for (int d = 0; d < DIM; d++) {
-        x[d] = p->x[d];
         box[d] = size[d];
+        if (n_halo == 0) { /* own particles alone: in their order already */
+            x[d] = p->x[d];
+            continue;
+        }
+        x[d] = malloc((n ? n : 1) * sizeof *x[d]);
+        if (!x[d]) {
+            failed = 1;
+            continue;
+        }
+        double *to = x[d];
+        const double *halo = p->x[d] + n_own;
+        memcpy(to, halo, n_halo_before * sizeof *to);
+        memcpy(to + n_halo_before, p->x[d], n_own * sizeof *to);
+        memcpy(to + n_halo_before + n_own, halo + n_halo_before,
+               (n_halo - n_halo_before) * sizeof *to);
     }
-    return raster_volume(DIM, p->n_fluid, x, dr, box, &rp, volume, err, err_len) ? -1 : 0;
+    if (failed)
+        snprintf(err, err_len, "graphical method: out of memory (%zu positions)", n);
+    else
+        failed = raster_count_part(DIM, n, x, dv->dr, box, &rp, x_lo, x_hi, c, err, err_len);
+    if (n_halo)
+        for (int d = 0; d < DIM; d++) free(x[d]);
+    return failed ? -1 : 0;
 }

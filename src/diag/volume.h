@@ -9,6 +9,7 @@
 #include "core/particles.h"
 #include "core/reduce.h"
 #include "diag/freesurface.h"
+#include "diag/raster.h"
 
 typedef struct {
     double eps_v1, eps_v2, eps_v3;
@@ -47,6 +48,17 @@ void volume_rate(const kernel *k, const particles *p, const neighbour_list *nl, 
  * (graphical_error). Returns 0, or -1 with a message. */
 int volume_graphical(const particles *p, const double size[DIM], const derived *dv, double *volume,
                      char *err, size_t err_len);
+
+#define volume_graphical_part DIM_NAME(volume_graphical_part)
+
+/* volume_graphical's liquid pixels of one process's part of the tank along x, [x_lo, x_hi),
+ * when the liquid is split among processes (docs/mpi.md): drawn from its own fluid particles
+ * and its halo, in the global order: the first n_halo_before halo particles (the head of the
+ * tail, the left neighbour's), the own ones, then the rest of the halo. The parts' counts add
+ * up to the whole liquid's (raster_count_part). Returns 0, or -1 with a message. */
+int volume_graphical_part(const particles *p, size_t n_halo_before, double x_lo, double x_hi,
+                          const double size[DIM], const derived *dv, raster_count *c, char *err,
+                          size_t err_len);
 
 /* eps_GM, Eq. (15): the ratio of two pixel counts, the current one over the initial
  * configuration's, so that eps_GM(0) = 0 and the method's bias at the surface cancels. */

@@ -3,6 +3,7 @@
 #include "parallel/mpi_bodies.h"
 #include "parallel/mpi_reduce.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -27,6 +28,21 @@ static void refresh_halo(const solver_domain *hooks, particles *p, uint64_t fiel
 {
     mpi_domain *d = of(hooks);
     halo_refresh(&d->halo, &d->slabs, p, fields, d->comm);
+}
+
+static int part_along_x(const solver_domain *hooks, const solver *s, double *lo, double *hi,
+                        size_t *n_halo_before)
+{
+    const mpi_domain *d = of(hooks);
+    const slabs *sl = &d->slabs;
+    if (!sl->first_strip) return -1;
+    const cell_grid *g = &s->grid;
+    double first = (double)(sl->first_strip[sl->rank] * CELL_STRIP),
+           end = (double)(sl->first_strip[sl->rank + 1] * CELL_STRIP);
+    *lo = sl->rank == 0 ? -INFINITY : g->origin[0] + first * g->size;
+    *hi = sl->rank == sl->n_ranks - 1 ? INFINITY : g->origin[0] + end * g->size;
+    *n_halo_before = d->halo.n_recv[0];
+    return 0;
 }
 
 static MPI_Comm comm_of(const reducer *r) { return ((mpi_domain *)r->context)->comm; }
@@ -54,6 +70,7 @@ void mpi_domain_attach(mpi_domain *d, solver *s, MPI_Comm comm)
     d->comm = comm;
     d->hooks = (solver_domain){.distribute = distribute,
                                .refresh_halo = refresh_halo,
+                               .part_along_x = part_along_x,
                                .reduce = {sum, max, min, total, d},
                                .bodies = mpi_bodies_domain(d),
                                .context = d};

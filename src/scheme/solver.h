@@ -32,6 +32,13 @@ typedef struct solver_domain {
     /* Copies the fields of `fields` (a set of FIELD_MASK) of the own particles into the
        halos of the other processes. */
     void (*refresh_halo)(const struct solver_domain *d, particles *p, uint64_t fields);
+    /* This process's part of the box along x, [lo, hi) (m; -INFINITY and INFINITY at the
+       ends): the positions whose cells it owns since the last distribute, every neighbour
+       within a cell of them being its own or in its halo; and how many of the halo particles
+       precede its own in the global order (the left neighbour's, at the head of the tail).
+       Returns -1 before the first distribute. */
+    int (*part_along_x)(const struct solver_domain *d, const struct solver *s, double *lo,
+                        double *hi, size_t *n_halo_before);
     /* The global reductions (core/reduce.h), and the bodies of liquid across processes
        (bodies.h). */
     reducer reduce;
