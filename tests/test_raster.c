@@ -246,6 +246,16 @@ static void test_blobs_not_bridged(void **state)
 
 /* ---- threads ------------------------------------------------------------------------------ */
 
+/* A lattice block of n particles from the wall at 0, each moved by up to `amplitude` dr along
+ * every axis (noise.h, from `seed`). */
+static void disordered_block(cloud *c, int dim, const int n[3], double amplitude, uint64_t seed)
+{
+    cloud_init(c);
+    add_block(c, dim, n, dr, (double[3]){0.0, 0.0, 0.0});
+    for (size_t i = 0; i < c->n; i++)
+        for (int d = 0; d < dim; d++) c->x[d][i] += amplitude * dr * noise(&seed);
+}
+
 /* Every pixel is written by one thread and the count is an integer: the volume must be the
  * same double with 1 and 2 threads (a disordered block, a box that is no whole number of
  * pixels). */
@@ -256,13 +266,9 @@ static void test_thread_count(void **state)
     for (int dim = 2; dim <= 3; dim++) {
         raster_params rp = raster_params_default(dim);
         cloud c;
-        cloud_init(&c);
         int n[3] = {dim == 3 ? 16 : 40, 16, 16};
         double size[3] = {(n[0] + 0.37) * dr, 24.13 * dr, (n[2] + 0.71) * dr};
-        add_block(&c, dim, n, dr, (double[3]){0.0, 0.0, 0.0});
-        uint64_t seed = 11;
-        for (size_t i = 0; i < c.n; i++)
-            for (int d = 0; d < dim; d++) c.x[d][i] += 0.2 * dr * noise(&seed);
+        disordered_block(&c, dim, n, 0.2, 11);
         omp_set_num_threads(1);
         double v1 = gm_volume(dim, &c, size, &rp);
         omp_set_num_threads(2);
@@ -289,13 +295,9 @@ static void test_parts_add_up(void **state)
     for (int dim = 2; dim <= 3; dim++) {
         raster_params rp = raster_params_default(dim);
         cloud c;
-        cloud_init(&c);
         int n[3] = {dim == 3 ? 24 : 60, 12, 8};
         double size[3] = {(n[0] + 0.37) * dr, 20.13 * dr, (n[2] + 0.71) * dr};
-        add_block(&c, dim, n, dr, (double[3]){0.0, 0.0, 0.0});
-        uint64_t seed = 5;
-        for (size_t i = 0; i < c.n; i++)
-            for (int d = 0; d < dim; d++) c.x[d][i] += 0.3 * dr * noise(&seed);
+        disordered_block(&c, dim, n, 0.3, 5);
         raster_count whole, part;
         char err[256];
         if (raster_count_part(dim, c.n, c.x, dr, size, &rp, -INFINITY, INFINITY, &whole, err,
