@@ -119,7 +119,7 @@ static int graphical_volume(run *r, double *volume, char *err, size_t err_len)
     int failed =
         volume_graphical_part(&s->p, n_halo_before, lo, hi, s->tank.size, &s->dv, &c, err, err_len);
     if (team_first_message(r->team, failed, err, err_len)) return -1;
-    for (int kind = 0; kind < 8; kind++)
+    for (size_t kind = 0; kind < sizeof c.count / sizeof c.count[0]; kind++)
         c.count[kind] = (unsigned long long)reducer_total(solver_reducer(s), (long)c.count[kind]);
     *volume = raster_count_volume(&c);
     return 0;

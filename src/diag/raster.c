@@ -281,7 +281,7 @@ int raster_count_part(int dim, size_t n, double *const x[3], double dr, const do
             if (!isfinite(x[d][i])) return fail(err, err_len, "particle position not finite");
 
     grid g = {.dim = dim, .nn = {1, 1, 1}, .h = {1.0, 1.0, 1.0}, .last = {1.0, 1.0, 1.0}};
-    g.total = 1;
+    double box_pixels = 1.0;
     for (int d = 0; d < dim; d++) {
         if (!(size[d] > 0.0 && isfinite(size[d])))
             return fail(err, err_len, "tank size must be positive");
@@ -289,7 +289,8 @@ int raster_count_part(int dim, size_t n, double *const x[3], double dr, const do
         /* a box within 1e-9 of a whole number of pixels is taken as one */
         double cells = ceil(size[d] / h - 1e-9);
         if (cells < 1.0) cells = 1.0;
-        if (cells > INT_MAX / 4 || (double)g.total * cells > (double)(SIZE_MAX / 8))
+        box_pixels *= cells;
+        if (cells > INT_MAX / 4 || box_pixels > (double)(SIZE_MAX / 8))
             return fail(err, err_len, "grid too large (lower k)");
         g.nn[d] = (int)cells;
         g.size[d] = size[d];
@@ -299,14 +300,15 @@ int raster_count_part(int dim, size_t n, double *const x[3], double dr, const do
         } else {
             g.h[d] = size[d] / cells;
         }
+    }
+    /* the part: its columns along x only */
+    g.nx_all = g.nn[0];
+    part_columns(&g, x_lo, x_hi);
+    g.total = 1;
+    for (int d = 0; d < dim; d++) {
         g.stride[d] = g.total;
         g.total *= (size_t)g.nn[d];
     }
-    /* the part: its columns along x only (a stride along x is 1 for any number of them) */
-    g.nx_all = g.nn[0];
-    part_columns(&g, x_lo, x_hi);
-    g.total = g.total / (size_t)g.nx_all * (size_t)g.nn[0];
-    for (int d = 1; d < dim; d++) g.stride[d] = g.stride[d] / (size_t)g.nx_all * (size_t)g.nn[0];
 
     *c = (raster_count){.dim = dim, .last = {g.last[0], g.last[1], g.last[2]}};
     c->pixel_volume = g.h[0] * g.h[1] * (dim == 3 ? g.h[2] : 1.0);

@@ -98,6 +98,19 @@ int volume_graphical(const particles *p, const double size[DIM], const derived *
     return 0;
 }
 
+/* The positions along one axis of the own particles and the halo in their global order: the
+ * first n_halo_before halo particles, the own ones, then the rest of the halo (malloc'd). */
+static double *in_global_order(const double *x, size_t n_own, size_t n_halo, size_t n_halo_before)
+{
+    double *to = malloc((n_own + n_halo) * sizeof *to);
+    if (!to) return NULL;
+    const double *halo = x + n_own;
+    memcpy(to, halo, n_halo_before * sizeof *to);
+    memcpy(to + n_halo_before, x, n_own * sizeof *to);
+    memcpy(to + n_halo_before + n_own, halo + n_halo_before, (n_halo - n_halo_before) * sizeof *to);
+    return to;
+}
+
 int volume_graphical_part(const particles *p, size_t n_halo_before, double x_lo, double x_hi,
                           const double size[DIM], const derived *dv, raster_count *c, char *err,
                           size_t err_len)
@@ -108,21 +121,9 @@ int volume_graphical_part(const particles *p, size_t n_halo_before, double x_lo,
     int failed = 0;
     for (int d = 0; d < DIM; d++) {
         box[d] = size[d];
-        if (n_halo == 0) { /* own particles alone: in their order already */
-            x[d] = p->x[d];
-            continue;
-        }
-        x[d] = malloc((n ? n : 1) * sizeof *x[d]);
-        if (!x[d]) {
-            failed = 1;
-            continue;
-        }
-        double *to = x[d];
-        const double *halo = p->x[d] + n_own;
-        memcpy(to, halo, n_halo_before * sizeof *to);
-        memcpy(to + n_halo_before, p->x[d], n_own * sizeof *to);
-        memcpy(to + n_halo_before + n_own, halo + n_halo_before,
-               (n_halo - n_halo_before) * sizeof *to);
+        /* own particles alone are in their order already */
+        x[d] = n_halo ? in_global_order(p->x[d], n_own, n_halo, n_halo_before) : p->x[d];
+        failed |= !x[d];
     }
     if (failed)
         snprintf(err, err_len, "graphical method: out of memory (%zu positions)", n);
