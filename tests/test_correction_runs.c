@@ -1,7 +1,7 @@
 /* Integration: the geometric volume correction (docs/volume-correction.md) on sloshing runs,
  * against the same runs without it. INM2 (cases/inm2.ini: sway A = 10 cm, T = 1 s, violent)
- * at N = 16 over 12 s drifts positive with the paper's switch alone: the mean of eps_v1 over a
- * period reaches +0.9 % and eps_v1 itself passes the 1 % threshold (measured: 0.91 %, 1.13 %).
+ * at N = 16 over 20 s drifts positive with the paper's switch alone: the mean of eps_v1 over a
+ * period reaches +0.9 % and eps_v1 itself passes the 1 % threshold (measured: 0.95 %, 1.17 %).
  * With the correction both must stay bounded: the period means within the issue's 0.5 % and
  * eps_v1 within the threshold; the run without it must leave both bounds, so this test fails
  * if the correction stops acting. The free sloshing period of test_sloshing_period's case with
@@ -52,17 +52,23 @@ static void test_inm2_volume_bounded(void **state)
 {
     (void)state;
     const double period = 1.0, threshold = 0.01;
-    const char *common[] = {"numerics.resolution=16",    "case.t_end=20",
-                            "output.snapshot_every=0",   "output.image_every=0",
-                            "output.checkpoint_every=0", "model.volume_correction=geometric"};
+    /* INM2's c0 = 20 m/s is below Eq. (6)'s estimate (docs/validation.md, "Density bound"):
+     * at N = 16 a free-surface particle of a jet along the wall is squeezed between two
+     * neighbours half a spacing away and reads 1206 kg/m^3 for a step (its neighbours 1040),
+     * on one side of round-off or the other. The bound of SAP's cases keeps such a transient
+     * from being taken for a breakdown; this test is about the volume. */
+    const char *common[] = {"numerics.resolution=16",           "case.t_end=20",
+                            "output.snapshot_every=0",          "output.image_every=0",
+                            "output.checkpoint_every=0",        "numerics.density_bound=0.5",
+                            "model.volume_correction=geometric"};
     table with, without;
     char dir[64];
-    run_case_file("inm2", common, 6, dir, &with);
-    common[5] = "model.volume_correction=none";
-    run_case_file("inm2", common, 6, dir, &without);
+    run_case_file("inm2", common, 7, dir, &with);
+    common[6] = "model.volume_correction=none";
+    run_case_file("inm2", common, 7, dir, &without);
     volume_bounds on = bounds_after_first_period(&with, period);
     volume_bounds off = bounds_after_first_period(&without, period);
-    printf("INM2, N = 16, 12 s: max |eps_v1| %.3f %% with the correction, %.3f %% without; "
+    printf("INM2, N = 16, 20 s: max |eps_v1| %.3f %% with the correction, %.3f %% without; "
            "largest period mean %.3f %% with, %.3f %% without\n",
            100.0 * on.worst, 100.0 * off.worst, 100.0 * on.worst_period_mean,
            100.0 * off.worst_period_mean);

@@ -12,8 +12,10 @@
  * of src/app/simulation.c alone), and a fifth time when shifting and the volume correction
  * began to leave alone the concentration gradient of the liquid's own compression
  * (src/physics/shifting.h, src/scheme/fields.*, src/scheme/volume_correction.c; the energy
- * budget's work_moves of the same change does not touch the state). Each
- * line is one particle, in C's exact %a notation. */
+ * budget's work_moves of the same change does not touch the state), and a sixth time when
+ * boxes shorter than 256 cells got narrower strips of cells (src/core/cells.c alone: the
+ * particles' order, and so the sums' order, moved by round-off). Each line is one particle,
+ * in C's exact %a notation. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>

@@ -133,9 +133,9 @@ static int prepare(run *r)
     progress_clear(&r->pr);
     if (r->team)
         log_error("vcsph: out of memory at step %ld, or the liquid cannot be split among %d "
-                  "processes: each takes whole strips of %d cells along x, and there are fewer "
+                  "processes: each takes whole strips of cells along x, and there are fewer "
                   "strips (docs/mpi.md); run on fewer processes",
-                  r->s.step, r->team->size, CELL_STRIP);
+                  r->s.step, r->team->size);
     else
         log_error("vcsph: out of memory at step %ld (or more than 2^31 - 1 particles with the "
                   "ghosts)",
@@ -324,10 +324,10 @@ static int check_strips(const run *r, char *err, size_t err_len)
     size_t strips = solver_strips_at_most(&r->s);
     if ((size_t)r->team->size <= strips) return RUN_OK;
     snprintf(err, err_len,
-             "%d processes, but the tank has at most %zu strips of %d cells along x at this "
+             "%d processes, but the tank has at most %zu strips of cells along x at this "
              "resolution, and each process takes whole strips (docs/mpi.md): run on at most %zu "
              "processes",
-             r->team->size, strips, CELL_STRIP, strips);
+             r->team->size, strips, strips);
     return RUN_BAD_INPUT;
 }
 

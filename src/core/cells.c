@@ -21,6 +21,9 @@ int cells_setup(cell_grid *g, const double lo[DIM], const double hi[DIM], double
         if (s > size) size = s;
     }
     g->size = size;
+    g->strip = g->n[0] / CELL_MIN_STRIPS;
+    if (g->strip > CELL_STRIP_WIDTH) g->strip = CELL_STRIP_WIDTH;
+    if (g->strip < 1) g->strip = 1;
     g->n_cells = n_cells;
     if (n_cells + 1 > g->cells_capacity) {
         size_t *s = realloc(g->start, (n_cells + 1) * sizeof *s);
@@ -49,15 +52,12 @@ static inline int cell_coord(const cell_grid *g, int d, double x)
 
 int cells_column(const cell_grid *g, double x) { return cell_coord(g, 0, x); }
 
-size_t cells_n_strips(const cell_grid *g)
-{
-    return (size_t)(g->n[0] + CELL_STRIP - 1) / CELL_STRIP;
-}
+size_t cells_n_strips(const cell_grid *g) { return (size_t)((g->n[0] + g->strip - 1) / g->strip); }
 
 static inline size_t cell_index(const cell_grid *g, const int c[DIM])
 {
-    int strip = c[0] / CELL_STRIP, x0 = strip * CELL_STRIP;
-    int width = g->n[0] - x0 < CELL_STRIP ? g->n[0] - x0 : CELL_STRIP;
+    int strip = c[0] / g->strip, x0 = strip * g->strip;
+    int width = g->n[0] - x0 < g->strip ? g->n[0] - x0 : g->strip;
     size_t rows = 1; /* the rows of cells along x in one strip: n[1] (x n[2]) */
     for (int d = 1; d < DIM; d++) rows *= (size_t)g->n[d];
     size_t row = (size_t)c[DIM - 1];
@@ -132,7 +132,7 @@ static int32_t scan_neighbours(const cell_grid *g, double *const x[DIM], size_t 
             /* cells adjacent along x are contiguous in the item array within a strip: one
              * run of cells, or two where the row crosses into the next strip */
             for (int from = lo[0]; from <= hi[0];) {
-                int strip_end = (from / CELL_STRIP + 1) * CELL_STRIP - 1;
+                int strip_end = (from / g->strip + 1) * g->strip - 1;
                 int to = hi[0] < strip_end ? hi[0] : strip_end;
                 c[0] = from;
                 size_t first = g->start[cell_index(g, c)];

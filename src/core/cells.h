@@ -11,6 +11,7 @@ typedef struct {
     double origin[DIM]; /* lower corner of cell (0, 0[, 0]) */
     double size;        /* cell side >= search radius */
     int n[DIM];         /* cells per axis */
+    int strip;          /* cells per strip along x (CELL_STRIP_WIDTH, or fewer in a short box) */
     size_t n_cells;
     size_t *start;     /* n_cells + 1: items of cell c are item[start[c] .. start[c+1]) */
     uint32_t *item;    /* particle indices, ascending within each cell */
@@ -27,14 +28,18 @@ typedef struct {
     double radius;
 } neighbour_list;
 
-/* Cells are numbered strip by strip: the box is cut along x into strips of CELL_STRIP cells,
- * and within a strip row by row (x fastest, then y, then z). The particles, sorted by cell,
- * then have their neighbours within three rows of one strip (nine in 3D), whatever the
+/* Cells are numbered strip by strip: the box is cut along x into strips of CELL_STRIP_WIDTH
+ * cells, and within a strip row by row (x fastest, then y, then z). The particles, sorted by
+ * cell, then have their neighbours within three rows of one strip (nine in 3D), whatever the
  * tank's length: numbered row by row across the whole box, a 2D tank of 1e6 particles put
  * twice the L2 cache between a particle and its neighbours above and below
  * (docs/performance.md). A strip's particles are also one contiguous range of the sorted
- * order, which is what the MPI build's slabs are made of (docs/mpi.md). */
-#define CELL_STRIP 16
+ * order, which is what the MPI build's slabs are made of (docs/mpi.md), whole strips each: a
+ * box of fewer than CELL_MIN_STRIPS x CELL_STRIP_WIDTH cells along x, whose window is small
+ * anyway, has strips of 1/CELL_MIN_STRIPS of its cells (at least one cell), so that it can be
+ * split among up to CELL_MIN_STRIPS processes in slabs balanced to a strip. */
+#define CELL_STRIP_WIDTH 16
+#define CELL_MIN_STRIPS  16
 
 #define cells_setup      DIM_NAME(cells_setup)
 #define cells_column     DIM_NAME(cells_column)
@@ -50,7 +55,7 @@ typedef struct {
 int cells_setup(cell_grid *g, const double lo[DIM], const double hi[DIM], double cell_size);
 void cells_free(cell_grid *g);
 /* The column of cells (the cell coordinate along x) of position x along x, clamped into the
- * box as binning clamps it; its strip is the column / CELL_STRIP. */
+ * box as binning clamps it; its strip is the column / g->strip. */
 int cells_column(const cell_grid *g, double x);
 size_t cells_n_strips(const cell_grid *g);
 /* Bins particles [0, n) by position: a stable counting sort. */

@@ -58,7 +58,7 @@ static void unpack(particles *p, size_t i, uint64_t fields, const double *record
 
 static size_t strip_of(const cell_grid *g, double x)
 {
-    return (size_t)cells_column(g, x) / CELL_STRIP;
+    return (size_t)cells_column(g, x) / g->strip;
 }
 
 int slabs_balance(slabs *s, const cell_grid *g, const particles *p, MPI_Comm comm)
@@ -190,8 +190,8 @@ static int plan_add(halo_plan *h, int side, size_t i)
 
 int halo_build(halo_plan *h, slabs *s, const cell_grid *g, particles *p, MPI_Comm comm)
 {
-    int first_column = (int)s->first_strip[s->rank] * CELL_STRIP;
-    int last_column = (int)s->first_strip[s->rank + 1] * CELL_STRIP - 1;
+    int first_column = (int)s->first_strip[s->rank] * g->strip;
+    int last_column = (int)s->first_strip[s->rank + 1] * g->strip - 1;
     if (last_column > g->n[0] - 1) last_column = g->n[0] - 1;
     h->n_send[0] = h->n_send[1] = 0;
     int failed = 0;
