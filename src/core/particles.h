@@ -164,7 +164,9 @@ static inline int particle_is_wall_image(const particles *p, size_t j)
 /* Allocates room for `capacity` particles (fluid + ghosts); all counts 0. Returns 0 or -1. */
 int particles_init(particles *p, size_t capacity);
 void particles_free(particles *p);
-/* Grows the store to hold at least `capacity` particles, keeping the contents. */
+/* Grows the store to hold at least `capacity` particles, and at least 1/PARTICLES_GROWTH
+ * more than it held, keeping the contents. */
+#define PARTICLES_GROWTH 4
 int particles_reserve(particles *p, size_t capacity);
 /* The bytes one particle slot takes in the store (every array of it). */
 size_t particles_bytes_per_slot(void);
