@@ -5,10 +5,8 @@
 int lattice_fill(particles *p, const config *cfg, const derived *dv, size_t first, size_t end)
 {
     size_t n = (size_t)dv->n_fluid, kept = 0;
-    /* room for the walls' images too: about 5 % of the fluid in the 2D benchmarks, more in a
-       narrow 3D tank, where tank_make_ghosts grows the store (by a quarter at a time) */
-    size_t count = end - first;
-    if (first > end || end > n || particles_reserve(p, count + count / 8 + 64)) return -1;
+    if (first > end || end > n || particles_reserve(p, particles_initial_room(end - first)))
+        return -1;
     double cell_volume = dv->cell_volume;
     /* the hydrostatic pressure below the top of the liquid box, whatever its shape (with
        gravity 0, the droplet tests, it is 0) */

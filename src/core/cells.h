@@ -55,9 +55,16 @@ typedef struct {
 int cells_setup(cell_grid *g, const double lo[DIM], const double hi[DIM], double cell_size);
 void cells_free(cell_grid *g);
 /* The column of cells (the cell coordinate along x) of position x along x, clamped into the
- * box as binning clamps it; its strip is the column / g->strip. */
+ * box as binning clamps it. */
 int cells_column(const cell_grid *g, double x);
 size_t cells_n_strips(const cell_grid *g);
+/* The first column of cells of strip k (of the box's end for k = cells_n_strips). */
+static inline int cells_strip_column(const cell_grid *g, size_t k) { return (int)k * g->strip; }
+/* The strip that holds position x along x. */
+static inline size_t cells_strip_of(const cell_grid *g, double x)
+{
+    return (size_t)(cells_column(g, x) / g->strip);
+}
 /* Bins particles [0, n) by position: a stable counting sort. */
 int cells_bin(cell_grid *g, double *const x[DIM], size_t n);
 /* After cells_bin of n particles: order[k] = the particle that goes to slot k when particles

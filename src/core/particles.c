@@ -18,10 +18,7 @@ int particles_reserve(particles *p, size_t capacity)
 {
     if (capacity <= p->capacity) return 0;
     size_t old = p->capacity;
-    /* by a quarter at least: a store that grows a few slots at a time (the ghosts as they
-       are made, a slab's halo from step to step) is copied a few times, not at every slot,
-       and holds at most a quarter more than it needs */
-    if (capacity < old + old / PARTICLES_GROWTH) capacity = old + old / PARTICLES_GROWTH;
+    if (capacity < particles_grown(old)) capacity = particles_grown(old);
 #define GROW_SCALAR(type, name, flags, snapshot, comment)                                          \
     if (grow((void **)&p->name, old, capacity, sizeof(type))) return -1;
 #define GROW_VECTOR(type, name, flags, snapshot, comment)                                          \

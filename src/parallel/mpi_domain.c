@@ -37,8 +37,8 @@ static int part_along_x(const solver_domain *hooks, const solver *s, double *lo,
     const slabs *sl = &d->slabs;
     if (!sl->first_strip) return -1;
     const cell_grid *g = &s->grid;
-    double first = (double)(sl->first_strip[sl->rank] * g->strip),
-           end = (double)(sl->first_strip[sl->rank + 1] * g->strip);
+    double first = cells_strip_column(g, sl->first_strip[sl->rank]),
+           end = cells_strip_column(g, sl->first_strip[sl->rank + 1]);
     *lo = sl->rank == 0 ? -INFINITY : g->origin[0] + first * g->size;
     *hi = sl->rank == sl->n_ranks - 1 ? INFINITY : g->origin[0] + end * g->size;
     *n_halo_before = d->halo.n_recv[0];

@@ -56,11 +56,6 @@ static void unpack(particles *p, size_t i, uint64_t fields, const double *record
     PARTICLE_FIELDS(UNPACK_SCALAR, UNPACK_VECTOR)
 }
 
-static size_t strip_of(const cell_grid *g, double x)
-{
-    return (size_t)cells_column(g, x) / g->strip;
-}
-
 int slabs_balance(slabs *s, const cell_grid *g, const particles *p, MPI_Comm comm)
 {
     MPI_Comm_size(comm, &s->n_ranks);
@@ -71,7 +66,7 @@ int slabs_balance(slabs *s, const cell_grid *g, const particles *p, MPI_Comm com
     size_t *first = realloc(s->first_strip, ((size_t)s->n_ranks + 1) * sizeof *first);
     if (!mine || !count || !first) MPI_Abort(comm, 3); /* a collective follows: do not leave */
     s->first_strip = first;
-    for (size_t i = 0; i < p->n_fluid; i++) mine[strip_of(g, p->x[0][i])]++;
+    for (size_t i = 0; i < p->n_fluid; i++) mine[cells_strip_of(g, p->x[0][i])]++;
     MPI_Allreduce(mine, all, (int)s->n_strips, MPI_UINT64_T, MPI_SUM, comm);
     for (size_t k = 0; k < s->n_strips; k++) count[k] = (size_t)all[k];
     int status = decomposition_balance(count, s->n_strips, s->n_ranks, s->first_strip);
@@ -82,7 +77,7 @@ int slabs_balance(slabs *s, const cell_grid *g, const particles *p, MPI_Comm com
 
 int slabs_owner(const slabs *s, const cell_grid *g, double x)
 {
-    size_t strip = strip_of(g, x);
+    size_t strip = cells_strip_of(g, x);
     int lo = 0, hi = s->n_ranks - 1; /* the last rank whose first strip is <= strip */
     while (lo < hi) {
         int mid = (lo + hi + 1) / 2;
@@ -190,8 +185,8 @@ static int plan_add(halo_plan *h, int side, size_t i)
 
 int halo_build(halo_plan *h, slabs *s, const cell_grid *g, particles *p, MPI_Comm comm)
 {
-    int first_column = (int)s->first_strip[s->rank] * g->strip;
-    int last_column = (int)s->first_strip[s->rank + 1] * g->strip - 1;
+    int first_column = cells_strip_column(g, s->first_strip[s->rank]);
+    int last_column = cells_strip_column(g, s->first_strip[s->rank + 1]) - 1;
     if (last_column > g->n[0] - 1) last_column = g->n[0] - 1;
     h->n_send[0] = h->n_send[1] = 0;
     int failed = 0;

@@ -51,10 +51,9 @@ void DIM_NAME(estimate_run)(const config *cfg, const derived *dv, int threads, r
     double ghosts = box > 0.0 ? (padded - box) * n / box : 0.0;
     double total = n + ghosts;
 
-    /* the store: lattice_fill reserves n + n/8 + 64 slots, and particles_reserve grows them
-       by a quarter at a time when the ghosts need more */
-    double capacity = n + floor(n / 8.0) + 64.0;
-    while (capacity < total) capacity += floor(capacity / PARTICLES_GROWTH);
+    /* the store: lattice_fill's room, grown as particles_reserve grows it for the ghosts */
+    size_t capacity = particles_initial_room((size_t)n);
+    while ((double)capacity < total) capacity = particles_grown(capacity);
     double store = (double)particles_bytes_per_slot() * capacity;
     /* alloc_work in solver.c: y0, sum, the rates (RK_VARS each), scratch, and the order */
     double work = ((3.0 * RK_VARS + 1.0) * sizeof(double) + sizeof(size_t)) * n;
