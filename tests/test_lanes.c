@@ -1,8 +1,9 @@
-/* The passes' four-lane forms (core/lanes.h) give the scalar forms' bits, on a disordered block
- * of liquid in a tank (wall ghosts, random velocities, shifting): the right-hand side's rates in
- * every variant of its loop (LES on and off, shifting on and off, constant and variable masses),
- * and every field of a few whole steps. A particle count that is not a multiple of four takes
- * the scalar tail too. Skipped on a processor without AVX2, where only the scalar forms run. */
+/* The passes' lane forms (core/lanes.h), 4 and 8 wide, give the scalar forms' bits, on a
+ * disordered block of liquid in a tank (wall ghosts, random velocities, shifting): the
+ * right-hand side's rates in every variant of its loop (LES on and off, shifting on and off,
+ * constant and variable masses), and every field of a few whole steps. A particle count that is
+ * not a multiple of four or eight takes the scalar tail too. A width the processor does not have
+ * (AVX2 for 4, AVX-512 for 8) is skipped: only narrower forms run there. */
 #include "core/lanes_switch.h"
 #include "scheme/rhs.h"
 #include "scheme/solver.h"
@@ -54,6 +55,13 @@ static void lanes_block(config *cfg, solver *s)
     assert_true(s->p.n_fluid % 4 != 0);
 }
 
+/* At most `width` lanes; false (the test is skipped) where the processor has fewer. */
+static bool lanes_of_width(int width)
+{
+    lanes_limit(width);
+    return lanes_width() == width;
+}
+
 /* n_values doubles at a and b: how many differ in their bits */
 static size_t differing(const double *a, const double *b, size_t n_values)
 {
@@ -62,11 +70,9 @@ static size_t differing(const double *a, const double *b, size_t n_values)
     return differ;
 }
 
-static void test_rhs_lanes_give_the_scalar_bits(void **state)
+static void rhs_lanes_give_the_scalar_bits(int width)
 {
-    (void)state;
-    lanes_turn_off(false);
-    if (!lanes_in_use()) skip();
+    if (!lanes_of_width(width)) skip();
     config cfg;
     solver s;
     lanes_block(&cfg, &s);
@@ -82,14 +88,15 @@ static void test_rhs_lanes_give_the_scalar_bits(void **state)
                 s.pp.les = les;
                 s.pp.shifting = shifting;
                 double eta = variable_mass ? 1.0 : 0.0;
-                lanes_turn_off(true);
+                lanes_limit(0);
                 rhs_compute(&s.pp, p, &s.nl, &frame, eta, &scalar.r);
-                lanes_turn_off(false);
+                lanes_limit(width);
                 rhs_compute(&s.pp, p, &s.nl, &frame, eta, &lanes.r);
                 size_t differ = differing(scalar.data, lanes.data, n_values);
                 if (differ)
-                    fail_msg("les %d, shifting %d, variable masses %d: %zu of %zu rates differ",
-                             les, shifting, variable_mass, differ, n_values);
+                    fail_msg("%d lanes, les %d, shifting %d, variable masses %d: %zu of %zu rates "
+                             "differ",
+                             width, les, shifting, variable_mass, differ, n_values);
             }
     /* the comparison compared something: forces and density rates are not all zero */
     double largest = 0.0;
@@ -108,17 +115,15 @@ static void test_rhs_lanes_give_the_scalar_bits(void **state)
     SCALAR(nu_t) SCALAR(nu_delta) VECTOR(shift) VECTOR(correction) SCALAR(diff_rho) SCALAR(diff_m)
 // clang-format on
 
-static void test_steps_with_lanes_give_the_scalar_bits(void **state)
+static void steps_with_lanes_give_the_scalar_bits(int width)
 {
-    (void)state;
-    lanes_turn_off(false);
-    if (!lanes_in_use()) skip();
+    if (!lanes_of_width(width)) skip();
     config cfg;
     solver scalar, lanes;
-    lanes_turn_off(true);
+    lanes_limit(0);
     lanes_block(&cfg, &scalar);
     for (int step = 0; step < 5; step++) assert_int_equal(solver_step(&scalar, cfg.t_end), 0);
-    lanes_turn_off(false);
+    lanes_limit(width);
     lanes_block(&cfg, &lanes);
     for (int step = 0; step < 5; step++) assert_int_equal(solver_step(&lanes, cfg.t_end), 0);
     size_t n = scalar.p.n_fluid;
@@ -126,7 +131,8 @@ static void test_steps_with_lanes_give_the_scalar_bits(void **state)
     assert_true(lanes.t > 0.0 && memcmp(&lanes.t, &scalar.t, sizeof(double)) == 0);
 #define COMPARE_SCALAR(name)                                                                       \
     if (differing(scalar.p.name, lanes.p.name, n))                                                 \
-        fail_msg(#name ": %zu of %zu values differ", differing(scalar.p.name, lanes.p.name, n), n);
+        fail_msg("%d lanes, " #name ": %zu of %zu values differ", width,                           \
+                 differing(scalar.p.name, lanes.p.name, n), n);
 #define COMPARE_VECTOR(name)                                                                       \
     for (int d = 0; d < DIM; d++) COMPARE_SCALAR(name[d])
     FLUID_FIELDS(COMPARE_SCALAR, COMPARE_VECTOR)
@@ -134,11 +140,37 @@ static void test_steps_with_lanes_give_the_scalar_bits(void **state)
     solver_free(&lanes);
 }
 
+static void test_rhs_in_4_lanes(void **state)
+{
+    (void)state;
+    rhs_lanes_give_the_scalar_bits(4);
+}
+
+static void test_rhs_in_8_lanes(void **state)
+{
+    (void)state;
+    rhs_lanes_give_the_scalar_bits(8);
+}
+
+static void test_steps_in_4_lanes(void **state)
+{
+    (void)state;
+    steps_with_lanes_give_the_scalar_bits(4);
+}
+
+static void test_steps_in_8_lanes(void **state)
+{
+    (void)state;
+    steps_with_lanes_give_the_scalar_bits(8);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_rhs_lanes_give_the_scalar_bits),
-        cmocka_unit_test(test_steps_with_lanes_give_the_scalar_bits),
+        cmocka_unit_test(test_rhs_in_4_lanes),
+        cmocka_unit_test(test_rhs_in_8_lanes),
+        cmocka_unit_test(test_steps_in_4_lanes),
+        cmocka_unit_test(test_steps_in_8_lanes),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -1,4 +1,4 @@
-/* lane_pairs: FOR_EACH_PAIR for four particles side by side (core/lanes.h). Step n gives each
+/* lane_pairs: FOR_EACH_PAIR for LANES particles side by side (core/lanes.h). Step n gives each
  * lane the n-th entry of its own particle's row, with the pair geometry of pair_of (r_ji, r^2,
  * F) computed by the same operations, and a mask of the lanes whose entry exists and lies
  * within 2h: a pass adds a lane's pair term only where the mask is set, so each particle's sums
@@ -18,7 +18,7 @@ typedef struct {
     lane_real r2, f;
 } lane_pair;
 
-/* The rows of particles i0 .. i0 + 3 and their positions. */
+/* The rows of particles i0 .. i0 + LANES - 1 and their positions. */
 typedef struct {
     const int32_t *row[LANES];
     int32_t count[LANES], most;
@@ -59,7 +59,7 @@ LANE_INLINE bool lane_pair_at(const kernel *k, double *const x[DIM], const lane_
     pr->r_ji = lane_vec_sub(lane_vec_gather(x, pr->j), rows->xi);
     pr->r2 = lane_vec_dot(pr->r_ji, pr->r_ji);
     pr->within = active & (pr->r2 < lane_broadcast(k->support2));
-    if (!(pr->within[0] | pr->within[1] | pr->within[2] | pr->within[3])) return false;
+    if (!lane_any(pr->within)) return false;
     pr->f = lane_kernel_f(k, lane_sqrt(pr->r2));
     return true;
 }

@@ -1,13 +1,13 @@
-/* lanes: four particles' pair sums side by side in SIMD lanes (GCC vector extensions). Each
- * lane is one particle i walking its own neighbour row in its own order, and every operation
- * on a lane is the operation the scalar code does on that particle, in the same order, so each
- * particle's sums are the scalar code's to the bit, whatever the instruction set (SSE does a
- * 4-lane operation as two 2-lane ones, AVX2 as one: the same roundings). */
+/* lanes: LANES particles' pair sums side by side in SIMD lanes (GCC vector extensions), LANES = 4
+ * (AVX2, x86-64-v3) or 8 (AVX-512, x86-64-v4), set by the file that includes this header (one
+ * file per width, scheme/rhs_lanes4.c and rhs_lanes8.c). Each lane is one particle i walking its
+ * own neighbour row in its own order, and every operation on a lane is the operation the scalar
+ * code does on that particle, in the same order, so each particle's sums are the scalar code's
+ * to the bit, whatever the width and the instruction set. */
 #ifndef VCSPH_LANES_H
 #define VCSPH_LANES_H
 
 #include "core/dim.h"
-#include "core/lanes_switch.h"
 #include <math.h>
 #include <stdbool.h>
 #include <stddef.h>
@@ -18,7 +18,14 @@
 #pragma GCC diagnostic ignored "-Wpsabi"
 #define LANE_INLINE __attribute__((always_inline)) static inline
 
-#define LANES 4
+#if LANES == 8
+#define LANES_TARGET __attribute__((target("arch=x86-64-v4")))
+#elif LANES == 4
+#define LANES_TARGET __attribute__((target("arch=x86-64-v3")))
+#else
+#error "LANES must be 4 or 8 before core/lanes.h is included"
+#endif
+
 typedef double lane_real __attribute__((vector_size(LANES * sizeof(double))));
 typedef int64_t lane_mask __attribute__((vector_size(LANES * sizeof(double)))); /* -1 or 0 */
 
@@ -26,7 +33,7 @@ typedef struct {
     lane_real c[DIM];
 } lane_vec;
 
-LANE_INLINE lane_real lane_broadcast(double a) { return (lane_real){a, a, a, a}; }
+LANE_INLINE lane_real lane_broadcast(double a) { return (lane_real){0} + a; }
 
 /* m ? a : b, lane by lane */
 LANE_INLINE lane_real lane_select(lane_mask m, lane_real a, lane_real b)
@@ -34,16 +41,28 @@ LANE_INLINE lane_real lane_select(lane_mask m, lane_real a, lane_real b)
     return (lane_real)((m & (lane_mask)a) | (~m & (lane_mask)b));
 }
 
-/* a[j[0]], ..., a[j[3]] */
+/* a[j[0]], ..., a[j[LANES - 1]] */
 LANE_INLINE lane_real lane_gather(const double *a, const int32_t j[LANES])
 {
-    return (lane_real){a[j[0]], a[j[1]], a[j[2]], a[j[3]]};
+    lane_real r;
+    for (int l = 0; l < LANES; l++) r[l] = a[j[l]];
+    return r;
 }
 
-/* a[i], ..., a[i + 3] */
+/* a[i], ..., a[i + LANES - 1] */
 LANE_INLINE lane_real lane_load(const double *a, size_t i)
 {
-    return (lane_real){a[i], a[i + 1], a[i + 2], a[i + 3]};
+    lane_real r;
+    for (int l = 0; l < LANES; l++) r[l] = a[i + (size_t)l];
+    return r;
+}
+
+/* whether any lane of m is set */
+LANE_INLINE bool lane_any(lane_mask m)
+{
+    int64_t any = 0;
+    for (int l = 0; l < LANES; l++) any |= m[l];
+    return any != 0;
 }
 
 LANE_INLINE lane_vec lane_vec_gather(double *const x[DIM], const int32_t j[LANES])

@@ -1,17 +1,28 @@
-/* lanes_switch: whether the passes run their lane forms (core/lanes.h). */
+/* lanes_switch: how many lanes the passes' lane forms run (core/lanes.h). */
 #include "core/lanes_switch.h"
 
 #include <stdlib.h>
 
-static int lanes_off = -1; /* -1: not decided yet */
+static int lanes_widest = -1; /* -1: not read from the environment yet */
 
-bool lanes_in_use(void)
+/* VCSPH_NO_LANES=1: the scalar form; VCSPH_LANES=0, 4 or 8: at most that many lanes */
+static int lanes_allowed(void)
 {
-    if (lanes_off < 0) {
-        const char *env = getenv("VCSPH_NO_LANES");
-        lanes_off = env && *env && *env != '0';
+    if (lanes_widest < 0) {
+        const char *off = getenv("VCSPH_NO_LANES"), *width = getenv("VCSPH_LANES");
+        lanes_widest = 8;
+        if (width && *width) lanes_widest = atoi(width);
+        if (off && *off && *off != '0') lanes_widest = 0;
     }
-    return !lanes_off && __builtin_cpu_supports("x86-64-v3");
+    return lanes_widest;
 }
 
-void lanes_turn_off(bool off) { lanes_off = off; }
+int lanes_width(void)
+{
+    int widest = lanes_allowed();
+    if (widest >= 8 && __builtin_cpu_supports("x86-64-v4")) return 8;
+    if (widest >= 4 && __builtin_cpu_supports("x86-64-v3")) return 4;
+    return 0;
+}
+
+void lanes_limit(int widest) { lanes_widest = widest; }

@@ -25,7 +25,7 @@ typedef struct {
  * have been computed when eta > 0). */
 void rhs_compute(const physics_params *pp, const particles *p, const neighbour_list *nl,
                  const tank_frame *frame, double eta, const rates *out);
-/* (Four particles at a time in SIMD lanes where core/lanes.h's lanes_in_use(): the same bits,
- * scheme/rhs_sums.h.) */
+/* (Four or eight particles at a time in SIMD lanes where core/lanes_switch.h's lanes_width() says
+ * so: the same bits, scheme/rhs_lanes.h.) */
 
 #endif

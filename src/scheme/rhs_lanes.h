@@ -1,52 +1,12 @@
-/* rhs_sums: the neighbour sums of the right-hand side of Eq. (3) for one particle (scalar), and
- * the same sums for four particles side by side in SIMD lanes (core/lanes.h). The lane version
- * transcribes the scalar one operation by operation, each pair function of src/physics (named
- * in its comments) written out in lane types in the same order, so both give the same bits;
- * tests/test_lanes.c holds them to it. */
-#ifndef VCSPH_RHS_SUMS_H
-#define VCSPH_RHS_SUMS_H
-
+/* rhs_lanes: the right-hand side in SIMD lanes (core/lanes.h), LANES particles side by side;
+ * included by scheme/rhs_lanes4.c and rhs_lanes8.c, which set LANES and RHS_COMPUTE_LANES. The lane
+ * sums transcribe rhs_particle_sums (scheme/rhs_particle.h) operation by operation, each pair
+ * function of src/physics (named in its comments) written out in lane types in the same order,
+ * so every width gives the scalar form's bits; tests/test_lanes.c holds them to it. */
 #include "core/lane_pairs.h"
-#include "physics/ale.h"
-#include "physics/continuity.h"
-#include "scheme/momentum.h"
+#include "scheme/rhs_particle.h"
 
-/* The neighbour sums of particle i: d rho/dt's pair terms, the mass flux and the force per unit
- * volume. */
-typedef struct {
-    double drho, mass_flux;
-    vec force; /* per unit volume */
-} rhs_sums;
-
-__attribute__((always_inline)) static inline rhs_sums
-rhs_particle_sums(const physics_params *pp, const particles *p, const neighbour_list *nl, size_t i,
-                  const bool les, const bool ale, const bool variable_mass)
-{
-    const kernel *k = &pp->k;
-    momentum_particle mi = momentum_particle_of(pp, p, i);
-    vec xi = vec_load(p->x, i), ui = mi.u, dui = mi.shift;
-    double rhoi = p->rho[i], vi = p->vol[i];
-    rhs_sums s = {0.0, 0.0, vec_zero()};
-    pair pr;
-    FOR_EACH_PAIR (k, p->x, nl, i, xi, pr) {
-        size_t j = pr.j;
-        double vj = p->vol[j];
-        vec u_ji = vec_sub(vec_load(p->u, j), ui);
-        vec transport_ji = u_ji; /* (u + du)_ji: the particles move with u + du */
-        if (ale) {
-            vec duj = vec_load(p->shift, j);
-            transport_ji = vec_add(u_ji, vec_sub(duj, dui));
-            double flux = ale_flux_pair(rhoi, dui, p->rho[j], duj, pr.r_ji, pr.f);
-            s.drho += flux * vj;
-            if (variable_mass && !particle_is_wall_image(p, j)) s.mass_flux += flux * vi * vj;
-        }
-        s.drho += continuity_pair(rhoi, transport_ji, pr.r_ji, pr.f, vj);
-        s.force = momentum_pair_add(s.force, pp, p, &mi, &pr, les, ale);
-    }
-    return s;
-}
-
-/* The same sums for the four particles i0 .. i0 + 3, one per lane (core/lanes.h): every
+/* The same sums for the particles i0 .. i0 + LANES - 1, one per lane (core/lanes.h): every
  * operation is the scalar one's, in the same order, so the sums are the same to the bit. A lane
  * whose row has ended, or whose neighbour lies beyond 2h, leaves its sums as they are. */
 __attribute__((always_inline)) static inline void
@@ -114,4 +74,40 @@ rhs_lanes_sums(const physics_params *pp, const particles *p, const neighbour_lis
     }
 }
 
-#endif
+/* The particles [i0, end), at most LANES of them: in lanes where there are LANES, else (the
+ * last block) one by one. */
+__attribute__((always_inline)) static inline void
+rhs_block_variant(const physics_params *pp, const particles *p, const neighbour_list *nl, size_t i0,
+                  size_t end, const tank_frame *frame, const bool les, const bool ale,
+                  const bool variable_mass, double eta, const rates *out)
+{
+    rhs_sums s[LANES];
+    size_t n = end - i0;
+    if (n == LANES)
+        rhs_lanes_sums(pp, p, nl, i0, les, ale, variable_mass, s);
+    else
+        for (size_t l = 0; l < n; l++)
+            s[l] = rhs_particle_sums(pp, p, nl, i0 + l, les, ale, variable_mass);
+    for (size_t l = 0; l < n; l++)
+        rhs_particle_finish(pp, p, i0 + l, frame, variable_mass, eta, s[l], out);
+}
+
+LANES_TARGET static void rhs_block_lanes(const physics_params *pp, const particles *p,
+                                         const neighbour_list *nl, size_t i0, size_t end,
+                                         const tank_frame *frame, double eta, const rates *out)
+{
+#define RHS_LANES_VARIANT(les, ale, mass)                                                          \
+    rhs_block_variant(pp, p, nl, i0, end, frame, les, ale, mass, eta, out)
+    RHS_FOR_VARIANT(pp, eta, RHS_LANES_VARIANT)
+#undef RHS_LANES_VARIANT
+}
+
+/* Each particle's rates are its own, whichever thread and block compute them. */
+void RHS_COMPUTE_LANES(const physics_params *pp, const particles *p, const neighbour_list *nl,
+                       const tank_frame *frame, double eta, const rates *out)
+{
+    size_t n = p->n_fluid;
+#pragma omp parallel for schedule(static)
+    for (size_t i0 = 0; i0 < n; i0 += LANES)
+        rhs_block_lanes(pp, p, nl, i0, i0 + LANES < n ? i0 + LANES : n, frame, eta, out);
+}
