@@ -33,17 +33,34 @@ static inline bool pair_of(const kernel *k, double *const x[DIM], vec xi, const 
     return true;
 }
 
-/* The pairs of particle i within 2h, in the list's order, into `out` (room for count[i]);
- * returns how many. A short loop of its own, so that the square roots and kernels of many
- * pairs are in flight at once before the physics reads them. */
-static inline int32_t pairs_gather(const kernel *k, double *const x[DIM], const neighbour_list *nl,
-                                   size_t i, vec xi, pair *out)
+/* The geometry of a whole row, a column per quantity (r_ji's components, r^2, r, F), `stride`
+ * doubles apart; entry n is row[n]'s. Each entry is computed by pair_of's operations in pair_of's
+ * order, so the values are pair_of's to the bit; an entry beyond 2h (the list's skin) may hold
+ * anything but its r^2, and pair_at skips it. Where the processor has AVX2 or AVX-512
+ * (core/lanes_switch.h), eight entries at a time in SIMD registers (core/pair.c). */
+enum { PAIR_R2 = DIM, PAIR_R, PAIR_F, PAIR_COLUMNS };
+#define PAIR_BLOCK     8 /* entries computed at once; the columns' stride is a multiple of it */
+#define pairs_geometry DIM_NAME(pairs_geometry)
+void pairs_geometry(const kernel *k, double *const x[DIM], const int32_t *row, int32_t count,
+                    vec xi, double *columns, size_t stride);
+
+/* The columns' stride for a row of `count`: room for whole blocks, and at least one entry. */
+static inline size_t pair_columns_stride(int32_t count)
 {
-    const int32_t *row = neighbour_row(nl, i);
-    int32_t n_in = 0;
-    for (int32_t n = 0; n < nl->count[i]; n++)
-        if (pair_of(k, x, xi, row, n, &out[n_in])) n_in++;
-    return n_in;
+    return ((size_t)count / PAIR_BLOCK + 1) * PAIR_BLOCK;
+}
+
+/* Entry n of the row's geometry (pairs_geometry) into `pr`; false for a pair beyond 2h. */
+static inline bool pair_at(const int32_t *row, const double *columns, size_t stride, int32_t n,
+                           double support2, pair *pr)
+{
+    pr->r2 = columns[PAIR_R2 * stride + (size_t)n];
+    if (pr->r2 >= support2) return false;
+    pr->j = (size_t)row[n];
+    for (int d = 0; d < DIM; d++) pr->r_ji.c[d] = columns[(size_t)d * stride + (size_t)n];
+    pr->r = columns[PAIR_R * stride + (size_t)n];
+    pr->f = columns[PAIR_F * stride + (size_t)n];
+    return true;
 }
 
 /* The one neighbour loop of every pass: the pairs (i, j) of particle i at xi whose distance
@@ -53,14 +70,22 @@ static inline int32_t pairs_gather(const kernel *k, double *const x[DIM], const 
  *     FOR_EACH_PAIR (k, p->x, nl, i, xi, pr) { ... pr.j, pr.r_ji, pr.f ... }
  *
  * Each pass supplies only its pair functions (src/physics). `continue` goes to the next pair,
- * `break` ends the loop. The geometry of the row is gathered first (pairs_gather, into a
- * buffer on the stack), then the body runs over it: the same pairs in the same order, so the
- * same sums, but the square roots of many pairs in flight at once instead of one pair's
- * chain of dependent operations after the other's. */
+ * `break` ends the loop. The geometry of the whole row is computed first (pairs_geometry, into
+ * columns on the stack), then the body runs over the entries within 2h: the same pairs in the
+ * same order with the same values, so the same sums, but the square roots and kernels of the
+ * row computed side by side, not one pair's chain of dependent operations after the other's. */
 #define FOR_EACH_PAIR(k, x, nl, i, xi, pr)                                                         \
-    for (pair pr##_all[(nl)->count[i] + 1],                                                        \
-         *pr##_end = pr##_all + pairs_gather(k, x, nl, i, xi, pr##_all), *pr##_at = pr##_all;      \
-         pr##_at < pr##_end && ((pr) = *pr##_at, true); pr##_at++)
+    for (size_t pr##_stride = pair_columns_stride((nl)->count[i]), pr##_once = 1; pr##_once;       \
+         pr##_once = 0)                                                                            \
+        for (double pr##_columns[PAIR_COLUMNS * pr##_stride],                                      \
+             *pr##_go = (pairs_geometry(k, x, neighbour_row(nl, i), (nl)->count[i], xi,            \
+                                        pr##_columns, pr##_stride),                                \
+                         pr##_columns);                                                            \
+             pr##_go; pr##_go = NULL)                                                              \
+            for (int32_t pr##_n = 0; pr##_n < (nl)->count[i]; pr##_n++)                            \
+                if (!pair_at(neighbour_row(nl, i), pr##_columns, pr##_stride, pr##_n,              \
+                             (k)->support2, &(pr))) {                                              \
+                } else
 
 /* FOR_EACH_PAIR over the neighbours for which `keep` holds, an expression of `pr.j` tested
  * before any geometry: for a pass that reads only a few of the neighbours (the free surface's)

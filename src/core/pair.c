@@ -1,0 +1,83 @@
+/* pair: the geometry of a neighbour row (core/pair.h), in SIMD blocks where the processor has
+ * them. */
+#include "core/pair.h"
+#include "core/lanes_switch.h"
+
+#include <string.h>
+
+/* Blocks of values are passed between inline functions only, never across a call. */
+#pragma GCC diagnostic ignored "-Wpsabi"
+
+/* pair_of, entry by entry (the values of an entry beyond 2h stay unset: pair_at skips it) */
+static void geometry_scalar(const kernel *k, double *const x[DIM], const int32_t *row,
+                            int32_t count, vec xi, double *columns, size_t stride)
+{
+    for (int32_t n = 0; n < count; n++) {
+        pair pr;
+        bool within = pair_of(k, x, xi, row, n, &pr);
+        columns[PAIR_R2 * stride + (size_t)n] = pr.r2;
+        if (!within) continue;
+        for (int d = 0; d < DIM; d++) columns[(size_t)d * stride + (size_t)n] = pr.r_ji.c[d];
+        columns[PAIR_R * stride + (size_t)n] = pr.r;
+        columns[PAIR_F * stride + (size_t)n] = pr.f;
+    }
+}
+
+typedef double block __attribute__((vector_size(PAIR_BLOCK * sizeof(double))));
+typedef int64_t block_mask __attribute__((vector_size(PAIR_BLOCK * sizeof(double))));
+
+/* pair_of's operations on PAIR_BLOCK entries at once, without its branch: vec_sub, vec_norm2
+ * (0 + a_0^2 + a_1^2 (+ a_2^2)), sqrt and kernel_f, lane by lane in the scalar order, so the
+ * same bits. Entries past the row's end repeat its last one and land in the columns' padding
+ * (stride is a multiple of PAIR_BLOCK). */
+__attribute__((always_inline)) static inline void
+geometry_blocks(const kernel *k, double *const x[DIM], const int32_t *row, int32_t count, vec xi,
+                double *columns, size_t stride)
+{
+    for (int32_t n0 = 0; n0 < count; n0 += PAIR_BLOCK) {
+        size_t j[PAIR_BLOCK];
+        for (int l = 0; l < PAIR_BLOCK; l++)
+            j[l] = (size_t)row[n0 + l < count ? n0 + l : count - 1];
+        block sum = {0}, r;
+        for (int d = 0; d < DIM; d++) {
+            /* element by element into a register: through memory, the block's load would wait
+               for eight stores (no store forwarding) */
+            const double *a = x[d];
+            block c = {a[j[0]], a[j[1]], a[j[2]], a[j[3]], a[j[4]], a[j[5]], a[j[6]], a[j[7]]};
+            c -= xi.c[d];
+            sum += c * c;
+            memcpy(&columns[(size_t)d * stride + (size_t)n0], &c, sizeof c);
+        }
+        for (int l = 0; l < PAIR_BLOCK; l++) r[l] = __builtin_sqrt(sum[l]);
+        block q = r * k->inv_h, s = 1.0 - 0.5 * q, f = k->f_norm * s * s * s;
+        block_mask beyond = q >= 2.0;
+        f = (block)(~beyond & (block_mask)f); /* kernel_f: 0 where q >= 2 */
+        memcpy(&columns[PAIR_R2 * stride + (size_t)n0], &sum, sizeof sum);
+        memcpy(&columns[PAIR_R * stride + (size_t)n0], &r, sizeof r);
+        memcpy(&columns[PAIR_F * stride + (size_t)n0], &f, sizeof f);
+    }
+}
+
+__attribute__((target("arch=x86-64-v4"))) static void
+geometry_avx512(const kernel *k, double *const x[DIM], const int32_t *row, int32_t count, vec xi,
+                double *columns, size_t stride)
+{
+    geometry_blocks(k, x, row, count, xi, columns, stride);
+}
+
+__attribute__((target("arch=x86-64-v3"))) static void
+geometry_avx2(const kernel *k, double *const x[DIM], const int32_t *row, int32_t count, vec xi,
+              double *columns, size_t stride)
+{
+    geometry_blocks(k, x, row, count, xi, columns, stride);
+}
+
+void pairs_geometry(const kernel *k, double *const x[DIM], const int32_t *row, int32_t count,
+                    vec xi, double *columns, size_t stride)
+{
+    switch (lanes_width()) {
+    case 8: geometry_avx512(k, x, row, count, xi, columns, stride); return;
+    case 4: geometry_avx2(k, x, row, count, xi, columns, stride); return;
+    default: geometry_scalar(k, x, row, count, xi, columns, stride); return;
+    }
+}
