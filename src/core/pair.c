@@ -19,6 +19,7 @@ static void geometry_scalar(const kernel *k, double *const x[DIM], const int32_t
         if (!within) continue;
         for (int d = 0; d < DIM; d++) columns[(size_t)d * stride + (size_t)n] = pr.r_ji.c[d];
         columns[PAIR_R * stride + (size_t)n] = pr.r;
+        columns[PAIR_W * stride + (size_t)n] = pr.w;
         columns[PAIR_F * stride + (size_t)n] = pr.f;
     }
 }
@@ -27,7 +28,7 @@ typedef double block __attribute__((vector_size(PAIR_BLOCK * sizeof(double))));
 typedef int64_t block_mask __attribute__((vector_size(PAIR_BLOCK * sizeof(double))));
 
 /* pair_of's operations on PAIR_BLOCK entries at once, without its branch: vec_sub, vec_norm2
- * (0 + a_0^2 + a_1^2 (+ a_2^2)), sqrt and kernel_f, lane by lane in the scalar order, so the
+ * (0 + a_0^2 + a_1^2 (+ a_2^2)), sqrt, kernel_w and kernel_f, lane by lane in the scalar order, so the
  * same bits. Entries past the row's end repeat its last one and land in the columns' padding
  * (stride is a multiple of PAIR_BLOCK). */
 __attribute__((always_inline)) static inline void
@@ -49,11 +50,15 @@ geometry_blocks(const kernel *k, double *const x[DIM], const int32_t *row, int32
             memcpy(&columns[(size_t)d * stride + (size_t)n0], &c, sizeof c);
         }
         for (int l = 0; l < PAIR_BLOCK; l++) r[l] = __builtin_sqrt(sum[l]);
-        block q = r * k->inv_h, s = 1.0 - 0.5 * q, f = k->f_norm * s * s * s;
+        /* kernel_w and kernel_f, 0 where q >= 2 */
+        block q = r * k->inv_h, s = 1.0 - 0.5 * q, s2 = s * s;
+        block w = k->norm * s2 * s2 * (1.0 + 2.0 * q), f = k->f_norm * s * s * s;
         block_mask beyond = q >= 2.0;
-        f = (block)(~beyond & (block_mask)f); /* kernel_f: 0 where q >= 2 */
+        w = (block)(~beyond & (block_mask)w);
+        f = (block)(~beyond & (block_mask)f);
         memcpy(&columns[PAIR_R2 * stride + (size_t)n0], &sum, sizeof sum);
         memcpy(&columns[PAIR_R * stride + (size_t)n0], &r, sizeof r);
+        memcpy(&columns[PAIR_W * stride + (size_t)n0], &w, sizeof w);
         memcpy(&columns[PAIR_F * stride + (size_t)n0], &f, sizeof f);
     }
 }

@@ -1,5 +1,5 @@
 /* pair: the geometry of one neighbour pair (i, j), shared by every pair loop: r_ji = r_j - r_i,
- * |r_ji|^2 and F_ij of grad_i W_ij = r_ji F_ij (theory §1). */
+ * |r_ji|^2, W_ij and F_ij of grad_i W_ij = r_ji F_ij (theory §1). */
 #ifndef VCSPH_PAIR_H
 #define VCSPH_PAIR_H
 
@@ -11,7 +11,7 @@
 typedef struct {
     size_t j;
     vec r_ji;
-    double r2, r, f; /* |r_ji|^2, |r_ji|, F_ij */
+    double r2, r, w, f; /* |r_ji|^2, |r_ji|, W_ij, F_ij */
 } pair;
 
 static inline const int32_t *neighbour_row(const neighbour_list *nl, size_t i)
@@ -29,16 +29,17 @@ static inline bool pair_of(const kernel *k, double *const x[DIM], vec xi, const 
     pr->r2 = vec_norm2(pr->r_ji);
     if (pr->r2 >= k->support2) return false;
     pr->r = sqrt(pr->r2);
+    pr->w = kernel_w(k, pr->r);
     pr->f = kernel_f(k, pr->r);
     return true;
 }
 
-/* The geometry of a whole row, a column per quantity (r_ji's components, r^2, r, F), `stride`
+/* The geometry of a whole row, a column per quantity (r_ji's components, r^2, r, W, F), `stride`
  * doubles apart; entry n is row[n]'s. Each entry is computed by pair_of's operations in pair_of's
  * order, so the values are pair_of's to the bit; an entry beyond 2h (the list's skin) may hold
  * anything but its r^2, and pair_at skips it. Where the processor has AVX2 or AVX-512
  * (core/lanes_switch.h), eight entries at a time in SIMD registers (core/pair.c). */
-enum { PAIR_R2 = DIM, PAIR_R, PAIR_F, PAIR_COLUMNS };
+enum { PAIR_R2 = DIM, PAIR_R, PAIR_W, PAIR_F, PAIR_COLUMNS };
 #define PAIR_BLOCK     8 /* entries computed at once; the columns' stride is a multiple of it */
 #define pairs_geometry DIM_NAME(pairs_geometry)
 void pairs_geometry(const kernel *k, double *const x[DIM], const int32_t *row, int32_t count,
@@ -59,6 +60,7 @@ static inline bool pair_at(const int32_t *row, const double *columns, size_t str
     pr->j = (size_t)row[n];
     for (int d = 0; d < DIM; d++) pr->r_ji.c[d] = columns[(size_t)d * stride + (size_t)n];
     pr->r = columns[PAIR_R * stride + (size_t)n];
+    pr->w = columns[PAIR_W * stride + (size_t)n];
     pr->f = columns[PAIR_F * stride + (size_t)n];
     return true;
 }
@@ -67,7 +69,7 @@ static inline bool pair_at(const int32_t *row, const double *columns, size_t str
  * is within 2h, one by one in `pr` (declared by the caller), in the list's order:
  *
  *     pair pr;
- *     FOR_EACH_PAIR (k, p->x, nl, i, xi, pr) { ... pr.j, pr.r_ji, pr.f ... }
+ *     FOR_EACH_PAIR (k, p->x, nl, i, xi, pr) { ... pr.j, pr.r_ji, pr.w, pr.f ... }
  *
  * Each pass supplies only its pair functions (src/physics). `continue` goes to the next pair,
  * `break` ends the loop. The geometry of the whole row is computed first (pairs_geometry, into

@@ -54,7 +54,7 @@ void fields_geometry(const physics_params *pp, const tank *t, particles *p,
         pair pr;
         FOR_EACH_PAIR (k, p->x, nl, i, xi, pr) {
             size_t j = pr.j;
-            neighbour_sums_add(&s, &pr, kernel_w(k, pr.r), p->vol[j], p->rho[j] - rhoi,
+            neighbour_sums_add(&s, &pr, pr.w, p->vol[j], p->rho[j] - rhoi,
                                vec_sub(vec_load(p->u_wall, j), ui));
         }
         double lambda = mat_min_eigenvalue(&s.l);
@@ -99,7 +99,7 @@ void fields_shifting(const physics_params *pp, particles *p, const neighbour_lis
         pair pr;
         FOR_EACH_PAIR (k, p->x, nl, i, xi, pr) {
             sum = vec_add(sum,
-                          shifting_pair(kernel_w(k, pr.r), pp->w_dr, pr.r_ji, pr.f, p->vol[pr.j]));
+                          shifting_pair(pr.w, pp->w_dr, pr.r_ji, pr.f, p->vol[pr.j]));
             double rel2 = vec_norm2(vec_sub(vec_load(p->u, pr.j), ui));
             if (rel2 > max_relative2) max_relative2 = rel2;
         }

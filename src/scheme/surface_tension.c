@@ -92,7 +92,7 @@ static void interface_and_normals(const surface_tension_params *st, const kernel
                 double fv = pr.f * p->vol[pr.j];
                 grad_one = vec_axpy(grad_one, fv, pr.r_ji);
                 mat_add_outer(&l, fv, pr.r_ji, pr.r_ji);
-                if (p->surface[pr.j] != SURFACE_INTERIOR) band += kernel_w(k, pr.r) * p->vol[pr.j];
+                if (p->surface[pr.j] != SURFACE_INTERIOR) band += pr.w * p->vol[pr.j];
             }
             delta = 2.0 * vec_norm(grad_one) / st->flat_integral;
             mat l_inv = renormalization(&l, mat_min_eigenvalue(&l), st->lambda_min);
@@ -138,7 +138,7 @@ static void smoothed_normals(const kernel *k, const particles *p, const neighbou
             pair pr;
             FOR_EACH_PAIR (k, p->x, nl, i, xi, pr) {
                 if (p->surface[pr.j] != SURFACE_FREE) continue;
-                sum = vec_axpy(sum, kernel_w(k, pr.r) * p->vol[pr.j], vec_load(normal, pr.j));
+                sum = vec_axpy(sum, pr.w * p->vol[pr.j], vec_load(normal, pr.j));
             }
         }
         double norm = vec_norm(sum);
@@ -204,7 +204,7 @@ static void band_force(const surface_tension_params *st, const kernel *k, partic
             pair pr;
             FOR_EACH_PAIR (k, p->x, nl, i, xi, pr) {
                 if (p->interface[pr.j] == 0.0) continue;
-                double w = kernel_w(k, pr.r), wv = w * p->vol[pr.j];
+                double w = pr.w, wv = w * p->vol[pr.j];
                 delta += w * p->interface[pr.j] * p->vol[pr.j] / band_sum[pr.j];
                 if (p->surface[pr.j] != SURFACE_FREE) continue;
                 sum_free += wv;

@@ -48,7 +48,7 @@ static void surface_band_mismatch(const kernel *k, particles *p, const neighbour
         FOR_EACH_PAIR (k, p->x, nl, i, xi, pr) {
             size_t j = pr.j;
             if (particle_is_wall_image(p, j) || p->surface[j] != SURFACE_INTERIOR) continue;
-            double w = kernel_w(k, pr.r) * p->vol[j];
+            double w = pr.w * p->vol[j];
             sum += w * p->volume_mismatch[j];
             weight += w;
         }
