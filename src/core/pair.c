@@ -28,8 +28,8 @@ typedef double block __attribute__((vector_size(PAIR_BLOCK * sizeof(double))));
 typedef int64_t block_mask __attribute__((vector_size(PAIR_BLOCK * sizeof(double))));
 
 /* pair_of's operations on PAIR_BLOCK entries at once, without its branch: vec_sub, vec_norm2
- * (0 + a_0^2 + a_1^2 (+ a_2^2)), sqrt, kernel_w and kernel_f, lane by lane in the scalar order, so the
- * same bits. Entries past the row's end repeat its last one and land in the columns' padding
+ * (0 + a_0^2 + a_1^2 (+ a_2^2)), sqrt, kernel_w and kernel_f, lane by lane in the scalar order, so
+ * the same bits. Entries past the row's end repeat its last one and land in the columns' padding
  * (stride is a multiple of PAIR_BLOCK). */
 __attribute__((always_inline)) static inline void
 geometry_blocks(const kernel *k, double *const x[DIM], const int32_t *row, int32_t count, vec xi,
