@@ -26,10 +26,7 @@ static void rhs_block_scalar(const physics_params *pp, const particles *p, const
                              size_t i0, size_t end, const tank_frame *frame, double eta,
                              const rates *out)
 {
-#define RHS_SCALAR_VARIANT(les, ale, mass)                                                         \
-    rhs_block_variant(pp, p, nl, i0, end, frame, les, ale, mass, eta, out)
-    RHS_FOR_VARIANT(pp, eta, RHS_SCALAR_VARIANT)
-#undef RHS_SCALAR_VARIANT
+    RHS_FOR_VARIANT(pp, eta, RHS_BLOCK_VARIANT)
 }
 
 void rhs_compute(const physics_params *pp, const particles *p, const neighbour_list *nl,

@@ -96,10 +96,7 @@ LANES_TARGET static void rhs_block_lanes(const physics_params *pp, const particl
                                          const neighbour_list *nl, size_t i0, size_t end,
                                          const tank_frame *frame, double eta, const rates *out)
 {
-#define RHS_LANES_VARIANT(les, ale, mass)                                                          \
-    rhs_block_variant(pp, p, nl, i0, end, frame, les, ale, mass, eta, out)
-    RHS_FOR_VARIANT(pp, eta, RHS_LANES_VARIANT)
-#undef RHS_LANES_VARIANT
+    RHS_FOR_VARIANT(pp, eta, RHS_BLOCK_VARIANT)
 }
 
 /* Each particle's rates are its own, whichever thread and block compute them. */

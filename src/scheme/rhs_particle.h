@@ -83,6 +83,11 @@ static inline void rhs_particle_finish(const physics_params *pp, const particles
     default: VARIANT(true, true, true); break;                                                     \
     }
 
+/* The block of particles [i0, end) of a block function whose parameters are named as
+ * rhs_block_variant's: that file's rhs_block_variant for the case's variant. */
+#define RHS_BLOCK_VARIANT(les, ale, mass)                                                          \
+    rhs_block_variant(pp, p, nl, i0, end, frame, les, ale, mass, eta, out)
+
 /* The lane forms, one per width (scheme/rhs_lanes4.c, rhs_lanes8.c): rhs_compute's work in
  * blocks of 4 or 8 particles, for processors with AVX2 or AVX-512 (core/lanes_switch.h). */
 #define rhs_compute_lanes4 DIM_NAME(rhs_compute_lanes4)
