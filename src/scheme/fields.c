@@ -98,8 +98,7 @@ void fields_shifting(const physics_params *pp, particles *p, const neighbour_lis
         double max_relative2 = 0.0;
         pair pr;
         FOR_EACH_PAIR (k, p->x, nl, i, xi, pr) {
-            sum = vec_add(sum,
-                          shifting_pair(pr.w, pp->w_dr, pr.r_ji, pr.f, p->vol[pr.j]));
+            sum = vec_add(sum, shifting_pair(pr.w, pp->w_dr, pr.r_ji, pr.f, p->vol[pr.j]));
             double rel2 = vec_norm2(vec_sub(vec_load(p->u, pr.j), ui));
             if (rel2 > max_relative2) max_relative2 = rel2;
         }
