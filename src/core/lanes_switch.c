@@ -3,18 +3,22 @@
 
 #include <stdlib.h>
 
-static int lanes_widest = -1; /* -1: not read from the environment yet */
+/* -1: not read from the environment yet. Read and written atomically: the passes ask from
+   inside their parallel loops (core/pair.c), so the first question may come from two threads. */
+static int lanes_widest = -1;
 
 /* VCSPH_NO_LANES=1: the scalar form; VCSPH_LANES=0, 4 or 8: at most that many lanes */
 static int lanes_allowed(void)
 {
-    if (lanes_widest < 0) {
+    int widest = __atomic_load_n(&lanes_widest, __ATOMIC_RELAXED);
+    if (widest < 0) {
         const char *off = getenv("VCSPH_NO_LANES"), *width = getenv("VCSPH_LANES");
-        lanes_widest = 8;
-        if (width && *width) lanes_widest = atoi(width);
-        if (off && *off && *off != '0') lanes_widest = 0;
+        widest = 8;
+        if (width && *width) widest = atoi(width);
+        if (off && *off && *off != '0') widest = 0;
+        __atomic_store_n(&lanes_widest, widest, __ATOMIC_RELAXED);
     }
-    return lanes_widest;
+    return widest;
 }
 
 int lanes_width(void)
@@ -25,4 +29,4 @@ int lanes_width(void)
     return 0;
 }
 
-void lanes_limit(int widest) { lanes_widest = widest; }
+void lanes_limit(int widest) { __atomic_store_n(&lanes_widest, widest, __ATOMIC_RELAXED); }
