@@ -140,37 +140,22 @@ static void steps_with_lanes_give_the_scalar_bits(int width)
     solver_free(&lanes);
 }
 
-static void test_rhs_in_4_lanes(void **state)
-{
-    (void)state;
-    rhs_lanes_give_the_scalar_bits(4);
-}
+/* The tests below take their width from cmocka's initial state. */
+static void test_rhs_lanes(void **state) { rhs_lanes_give_the_scalar_bits(*(const int *)*state); }
 
-static void test_rhs_in_8_lanes(void **state)
+static void test_steps_with_lanes(void **state)
 {
-    (void)state;
-    rhs_lanes_give_the_scalar_bits(8);
-}
-
-static void test_steps_in_4_lanes(void **state)
-{
-    (void)state;
-    steps_with_lanes_give_the_scalar_bits(4);
-}
-
-static void test_steps_in_8_lanes(void **state)
-{
-    (void)state;
-    steps_with_lanes_give_the_scalar_bits(8);
+    steps_with_lanes_give_the_scalar_bits(*(const int *)*state);
 }
 
 int main(void)
 {
+    static int four = 4, eight = 8;
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_rhs_in_4_lanes),
-        cmocka_unit_test(test_rhs_in_8_lanes),
-        cmocka_unit_test(test_steps_in_4_lanes),
-        cmocka_unit_test(test_steps_in_8_lanes),
+        {"test_rhs_in_4_lanes", test_rhs_lanes, NULL, NULL, &four},
+        {"test_rhs_in_8_lanes", test_rhs_lanes, NULL, NULL, &eight},
+        {"test_steps_in_4_lanes", test_steps_with_lanes, NULL, NULL, &four},
+        {"test_steps_in_8_lanes", test_steps_with_lanes, NULL, NULL, &eight},
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
