@@ -15,7 +15,7 @@ static double bytes_per_particle(const solver *s)
                   sizeof(size_t) * (double)p->n_fluid;
     double lists = (double)s->nl.index_capacity * sizeof(int32_t) +
                    (double)s->nl.capacity_rows * sizeof(int32_t);
-    double cells = (double)s->grid.item_capacity * 2.0 * sizeof(uint32_t) +
+    double cells = (double)s->grid.item_capacity * (2.0 * sizeof(uint32_t) + DIM * sizeof(double)) +
                    (double)s->grid.cells_capacity * sizeof(size_t);
     return (store + work + lists + cells) / (double)p->n_fluid;
 }

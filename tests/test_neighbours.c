@@ -1,12 +1,15 @@
 /* Neighbour search (cell list + lists) against brute force, with particles near every wall,
- * edge and corner and their ghosts; and the sort by cell. */
+ * edge and corner and their ghosts, in each form of the scan (core/cells_scan.h); and the
+ * sort by cell. */
 #include "boundary/tank.h"
 #include "core/cells.h"
+#include "core/lanes_switch.h"
 
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdlib.h>
+#include <string.h>
 #include <cmocka.h>
 
 #include "check.h"
@@ -26,6 +29,7 @@ static void scatter(particles *p, size_t n, unsigned seed)
         for (int d = 0; d < DIM; d++) {
             double r = (double)rand() / RAND_MAX;
             if (i % 3 == 0) r = (i / 3) % 2 ? 0.02 * r : 1.0 - 0.02 * r; /* near a wall */
+            if (i % 50 == 0) r = 0.0; /* in a corner: its images lie on it, at distance 0 */
             p->x[d][i] = r;
         }
         p->id[i] = (int64_t)i;
@@ -56,8 +60,25 @@ static void check_against_brute_force(size_t n, double radius)
     assert_int_equal(cells_setup(&grid, lo, hi, radius), 0);
     assert_true(grid.size >= radius);
     assert_int_equal(cells_bin(&grid, p.x, p.n_total), 0);
+    /* the scalar form's rows, in their order, for the lane forms to match */
+    lanes_limit(0);
     nl.row_capacity = 4; /* force the overflow path */
     assert_int_equal(neighbours_build(&nl, &grid, p.x, p.n_fluid, radius), 0);
+    size_t cap = nl.row_capacity;
+    int32_t *scalar_rows = malloc(p.n_fluid * cap * sizeof *scalar_rows);
+    memcpy(scalar_rows, nl.index, p.n_fluid * cap * sizeof *scalar_rows);
+    for (int width = 0; width <= 8; width += 4) {
+        lanes_limit(width);
+        neighbours_free(&nl);
+        nl.row_capacity = 4; /* force the overflow path */
+        assert_int_equal(neighbours_build(&nl, &grid, p.x, p.n_fluid, radius), 0);
+        assert_int_equal(nl.row_capacity, cap);
+        for (size_t i = 0; i < p.n_fluid; i++)
+            for (int32_t k = 0; k < nl.count[i]; k++)
+                assert_int_equal(nl.index[i * cap + (size_t)k], scalar_rows[i * cap + (size_t)k]);
+    }
+    lanes_limit(8);
+    free(scalar_rows);
 
     int32_t *expected = malloc(p.n_total * sizeof *expected);
     int32_t *found = malloc(p.n_total * sizeof *found);

@@ -1,5 +1,6 @@
 /* cells: binning by counting sort and gather-style neighbour lists. */
 #include "core/cells.h"
+#include "core/cells_scan.h"
 #include "core/vec.h"
 
 #include <stdlib.h>
@@ -39,6 +40,7 @@ void cells_free(cell_grid *g)
     free(g->start);
     free(g->item);
     free(g->cell_of);
+    for (int d = 0; d < DIM; d++) free(g->xs[d]);
     memset(g, 0, sizeof *g);
 }
 
@@ -74,6 +76,11 @@ int cells_bin(cell_grid *g, double *const x[DIM], size_t n)
         uint32_t *cell_of = realloc(g->cell_of, n * sizeof *cell_of);
         if (!cell_of) return -1;
         g->cell_of = cell_of;
+        for (int d = 0; d < DIM; d++) {
+            double *xs = realloc(g->xs[d], n * sizeof *xs);
+            if (!xs) return -1;
+            g->xs[d] = xs;
+        }
         g->item_capacity = n;
     }
 #pragma omp parallel for schedule(static)
@@ -92,6 +99,9 @@ int cells_bin(cell_grid *g, double *const x[DIM], size_t n)
     }
     for (size_t c = g->n_cells; c > 0; c--) g->start[c] = g->start[c - 1];
     g->start[0] = 0;
+#pragma omp parallel for schedule(static)
+    for (size_t m = 0; m < n; m++)
+        for (int d = 0; d < DIM; d++) g->xs[d][m] = x[d][g->item[m]];
     return 0;
 }
 
@@ -114,7 +124,7 @@ void neighbours_free(neighbour_list *nl)
 /* Scans the 3^DIM cells around particle i in a fixed order; returns how many neighbours it
  * found (it stores at most `cap` of them). */
 static int32_t scan_neighbours(const cell_grid *g, double *const x[DIM], size_t i, double r2max,
-                               int32_t *row, int32_t cap)
+                               int32_t *row, int32_t cap, cells_scan_fn scan)
 {
     int c0[DIM], lo[DIM], hi[DIM];
     for (int d = 0; d < DIM; d++) {
@@ -138,15 +148,7 @@ static int32_t scan_neighbours(const cell_grid *g, double *const x[DIM], size_t 
                 size_t first = g->start[cell_index(g, c)];
                 c[0] = to;
                 size_t last = g->start[cell_index(g, c) + 1];
-                for (size_t m = first; m < last; m++) {
-                    uint32_t j = g->item[m];
-                    if (j == i) continue;
-                    double r2 = vec_norm2(vec_sub(vec_load(x, j), xi));
-                    if (r2 < r2max) {
-                        if (found < cap) row[found] = (int32_t)j;
-                        found++;
-                    }
-                }
+                found = scan(g, first, last, xi, (uint32_t)i, r2max, row, found, cap);
                 from = to + 1;
             }
     return found;
@@ -156,6 +158,7 @@ int neighbours_build(neighbour_list *nl, const cell_grid *g, double *const x[DIM
                      double radius)
 {
     double r2max = radius * radius;
+    cells_scan_fn scan = cells_scan_form();
     nl->radius = radius;
     nl->n_rows = n_rows;
     if (nl->row_capacity == 0) nl->row_capacity = DIM == 2 ? 64 : 128;
@@ -177,7 +180,7 @@ int neighbours_build(neighbour_list *nl, const cell_grid *g, double *const x[DIM
         int32_t cap = (int32_t)nl->row_capacity, most = 0;
 #pragma omp parallel for schedule(static) reduction(max : most)
         for (size_t i = 0; i < n_rows; i++) {
-            int32_t k = scan_neighbours(g, x, i, r2max, nl->index + i * (size_t)cap, cap);
+            int32_t k = scan_neighbours(g, x, i, r2max, nl->index + i * (size_t)cap, cap, scan);
             nl->count[i] = k;
             if (k > most) most = k;
         }

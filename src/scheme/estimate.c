@@ -64,8 +64,9 @@ void DIM_NAME(estimate_run)(const config *cfg, const derived *dv, int threads, r
     double row = DIM == 2 ? 64.0 : 128.0, inside = ball / cell_volume;
     if (inside > row) row = ceil(1.25 * inside);
     double lists = (row + 1.0) * sizeof(int32_t) * n;
-    /* the cell grid: start per cell, item and cell_of per particle */
-    double grid = (cells + 1.0) * sizeof(size_t) + 2.0 * sizeof(uint32_t) * total;
+    /* the cell grid: start per cell, item, cell_of and the position copy xs per particle */
+    double grid =
+        (cells + 1.0) * sizeof(size_t) + (2.0 * sizeof(uint32_t) + DIM * sizeof(double)) * total;
     /* surface tension's work, over fluid and ghosts, and its sums per body (at most one body
        a particle) */
     double st = cfg->surface_tension > 0.0
