@@ -89,6 +89,32 @@ static inline bool pair_at(const int32_t *row, const double *columns, size_t str
                              (k)->support2, &(pr))) {                                              \
                 } else
 
+/* One row's geometry kept for several pair loops over it: a pass that needs two sums of the
+ * same neighbours (the shifting and the correction velocity) computes the row once.
+ *
+ *     PAIR_ROW (k, p->x, nl, i, xi, row);          declares `row`, its columns on the stack
+ *     pair pr;
+ *     FOR_EACH_PAIR_OF_ROW (&row, pr) { ... }       the pairs within 2h, as FOR_EACH_PAIR's */
+typedef struct {
+    const int32_t *row;
+    int32_t count;
+    size_t stride;
+    const double *columns;
+    double support2;
+} pair_row;
+
+#define PAIR_ROW(k, x, nl, i, xi, name)                                                            \
+    size_t name##_stride = pair_columns_stride((nl)->count[i]);                                    \
+    double name##_columns[PAIR_COLUMNS * name##_stride];                                           \
+    pairs_geometry(k, x, neighbour_row(nl, i), (nl)->count[i], xi, name##_columns, name##_stride); \
+    const pair_row name = {neighbour_row(nl, i), (nl)->count[i], name##_stride, name##_columns,    \
+                           (k)->support2}
+
+#define FOR_EACH_PAIR_OF_ROW(rw, pr)                                                               \
+    for (int32_t pr##_n = 0; pr##_n < (rw)->count; pr##_n++)                                       \
+        if (!pair_at((rw)->row, (rw)->columns, (rw)->stride, pr##_n, (rw)->support2, &(pr))) {     \
+        } else
+
 /* FOR_EACH_PAIR over the neighbours for which `keep` holds, an expression of `pr.j` tested
  * before any geometry: for a pass that reads only a few of the neighbours (the free surface's)
  * of many particles. The same pairs as FOR_EACH_PAIR with `if (!keep) continue;` in its body, in

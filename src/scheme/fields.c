@@ -5,6 +5,7 @@
 #include "physics/diffusion.h"
 #include "physics/shifting.h"
 #include "physics/viscosity.h"
+#include "scheme/volume_correction.h"
 #include "core/pair.h"
 
 /* Sums of one particle over its neighbours: the geometry (Eqs. 10, 11, A.2) and the raw
@@ -89,27 +90,39 @@ void fields_geometry(const physics_params *pp, const tank *t, particles *p,
  * beyond the floor of the liquid's own compression gradient (shifting.h), limited, then
  * made tangential in S_F and switched off where lambda < 0.4 (drops and jets: no reliable
  * normal; theory §4, inferred from Sun et al. 2017). */
-void fields_shifting(const physics_params *pp, particles *p, const neighbour_list *nl)
+static vec shifting_velocity(const physics_params *pp, const particles *p, size_t i,
+                             const pair_row *row)
 {
     const kernel *k = &pp->k;
+    vec ui = vec_load(p->u, i), sum = vec_zero();
+    double max_relative2 = 0.0;
+    pair pr;
+    FOR_EACH_PAIR_OF_ROW(row, pr)
+    {
+        sum = vec_add(sum, shifting_pair(pr.w, pp->w_dr, pr.r_ji, pr.f, p->vol[pr.j]));
+        double rel2 = vec_norm2(vec_sub(vec_load(p->u, pr.j), ui));
+        if (rel2 > max_relative2) max_relative2 = rel2;
+    }
+    sum = gradient_beyond_floor(sum, fields_compression_gradient(p, i));
+    vec du = vec_scale(sum, -k->h * pp->shift_u_max);
+    du = shifting_limit(du, sqrt(max_relative2), pp->shift_u_max);
+    if (p->lambda[i] < SHIFTING_LAMBDA_MIN) return vec_zero();
+    if (p->surface[i] != SURFACE_INTERIOR)
+        return shifting_tangential(du, vec_load(p->normal, i)); /* the surface's */
+    return du;
+}
+
+void fields_shifting_and_correction(const physics_params *pp, particles *p,
+                                    const neighbour_list *nl, bool shift, bool correct)
+{
+    const kernel *k = &pp->k;
+    if (correct) volume_correction_ghost_mismatch(p);
 #pragma omp parallel for schedule(static)
     for (size_t i = 0; i < p->n_fluid; i++) {
-        vec xi = vec_load(p->x, i), ui = vec_load(p->u, i), sum = vec_zero();
-        double max_relative2 = 0.0;
-        pair pr;
-        FOR_EACH_PAIR (k, p->x, nl, i, xi, pr) {
-            sum = vec_add(sum, shifting_pair(pr.w, pp->w_dr, pr.r_ji, pr.f, p->vol[pr.j]));
-            double rel2 = vec_norm2(vec_sub(vec_load(p->u, pr.j), ui));
-            if (rel2 > max_relative2) max_relative2 = rel2;
-        }
-        sum = gradient_beyond_floor(sum, fields_compression_gradient(p, i));
-        vec du = vec_scale(sum, -k->h * pp->shift_u_max);
-        du = shifting_limit(du, sqrt(max_relative2), pp->shift_u_max);
-        if (p->lambda[i] < SHIFTING_LAMBDA_MIN)
-            du = vec_zero();
-        else if (p->surface[i] != SURFACE_INTERIOR)
-            du = shifting_tangential(du, vec_load(p->normal, i)); /* the surface's */
-        vec_store(p->shift, i, du);
+        vec xi = vec_load(p->x, i);
+        PAIR_ROW(k, p->x, nl, i, xi, row);
+        if (shift) vec_store(p->shift, i, shifting_velocity(pp, p, i, &row));
+        if (correct) vec_store(p->correction, i, volume_correction_velocity_of(pp, p, i, &row));
     }
 }
 

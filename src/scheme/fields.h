@@ -9,9 +9,9 @@
 #include "core/particles.h"
 #include "scheme/physics_params.h"
 
-#define fields_geometry     DIM_NAME(fields_geometry)
-#define fields_shifting     DIM_NAME(fields_shifting)
-#define fields_frozen_terms DIM_NAME(fields_frozen_terms)
+#define fields_geometry                DIM_NAME(fields_geometry)
+#define fields_shifting_and_correction DIM_NAME(fields_shifting_and_correction)
+#define fields_frozen_terms            DIM_NAME(fields_frozen_terms)
 
 /* Lambda below which a particle gets no shifting (theory §4). */
 #define SHIFTING_LAMBDA_MIN 0.4
@@ -29,10 +29,12 @@ static inline double fields_compression_gradient(const particles *p, size_t i)
 void fields_geometry(const physics_params *pp, const tank *t, particles *p,
                      const neighbour_list *nl);
 
-/* The shifting velocity du of Eq. (7), frozen over the RK stages (sec. 2.4), for the fluid;
- * computed after EdBC has corrected the densities, since the volumes weigh it. Call only
- * when the scheme shifts (pp->shifting). */
-void fields_shifting(const physics_params *pp, particles *p, const neighbour_list *nl);
+/* The shifting velocity du of Eq. (7) (`shift`) and the volume correction's dv (`correct`,
+ * volume_correction.h, after its mismatch e), frozen over the RK stages (sec. 2.4), for the
+ * fluid; computed after EdBC has corrected the densities, since the volumes weigh them. Both
+ * sum over the same neighbours, so one pass computes each row's geometry once for the two. */
+void fields_shifting_and_correction(const physics_params *pp, particles *p,
+                                    const neighbour_list *nl, bool shift, bool correct);
 
 /* The other terms frozen over the RK stages, after the shifting velocity and bounce-back:
  * the ghosts' copies of the per-step fields, D^rho and, with variable masses, D^m of

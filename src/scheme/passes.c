@@ -83,16 +83,16 @@ static long find_bodies(solver *s, const tank_frame *frame)
     return 0;
 }
 
-static bool shifts(const solver *s) { return s->pp.shifting; }
+static bool corrects(const solver *s) { return s->pp.volume_correction; }
 
-static long shifting(solver *s, const tank_frame *frame)
+static bool shifts_or_corrects(const solver *s) { return s->pp.shifting || corrects(s); }
+
+static long shifting_and_correction(solver *s, const tank_frame *frame)
 {
     (void)frame;
-    fields_shifting(&s->pp, &s->p, &s->nl);
+    fields_shifting_and_correction(&s->pp, &s->p, &s->nl, s->pp.shifting, corrects(s));
     return 0;
 }
-
-static bool corrects(const solver *s) { return s->pp.volume_correction; }
 
 static long correction_mismatch(solver *s, const tank_frame *frame)
 {
@@ -105,13 +105,6 @@ static long correction_band(solver *s, const tank_frame *frame)
 {
     (void)frame;
     volume_correction_band(&s->pp, &s->p, &s->nl);
-    return 0;
-}
-
-static long correction_velocity(solver *s, const tank_frame *frame)
-{
-    (void)frame;
-    volume_correction_velocity(&s->pp, &s->p, &s->nl);
     return 0;
 }
 
@@ -158,15 +151,16 @@ static const step_pass prepare_passes[] = {
     {"eta control", F(kernel_sum) | F(surface), 0, has_eta_control, eta_control},
     {"bodies", F(x) | F(surface), 0, needs_bodies, find_bodies},
     {"EdBC (Eq. 9)", F(surface) | F(lambda), F(rho) | F(p) | F(vol), NULL, edbc},
-    {"shifting (Eq. 7)", F(x) | F(vol) | F(lambda) | F(normal) | F(surface), F(shift), shifts,
-     shifting},
-    /* the geometric volume correction (volume_correction.h) */
+    /* the geometric volume correction's mismatch e (volume_correction.h) */
     {"volume mismatch", F(vol) | F(kernel_sum) | F(surface), F(volume_mismatch), corrects,
      correction_mismatch},
     {"volume mismatch in S_F", F(x) | F(vol) | F(surface) | F(volume_mismatch), F(volume_mismatch),
      corrects, correction_band},
-    {"correction velocity", F(x) | F(rho) | F(vol) | F(grad_rho) | F(lambda) | F(volume_mismatch),
-     F(correction), corrects, correction_velocity},
+    /* Eq. (7) and the correction velocity, over one geometry of each row */
+    {"shifting (Eq. 7) and correction velocity",
+     F(x) | F(u) | F(rho) | F(vol) | F(grad_rho) | F(lambda) | F(normal) | F(surface) |
+         F(volume_mismatch),
+     F(shift) | F(correction), shifts_or_corrects, shifting_and_correction},
     {"one normal speed per body", F(vol) | F(lambda) | F(normal) | F(correction), F(correction),
      corrects, correction_per_body},
     {"bounce-back", F(x) | F(u) | F(shift) | F(correction), F(u) | F(shift) | F(correction), NULL,

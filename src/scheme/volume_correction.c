@@ -56,28 +56,22 @@ static void surface_band_mismatch(const kernel *k, particles *p, const neighbour
     }
 }
 
-static void correction_velocity(const physics_params *pp, particles *p, const neighbour_list *nl)
+vec volume_correction_velocity_of(const physics_params *pp, const particles *p, size_t i,
+                                  const pair_row *row)
 {
-    const kernel *k = &pp->k;
-    double scale = -k->h * pp->shift_u_max;
-#pragma omp parallel for schedule(static)
-    for (size_t i = 0; i < p->n_fluid; i++) {
-        vec du = vec_zero();
-        if (p->lambda[i] >= SHIFTING_LAMBDA_MIN) {
-            vec xi = vec_load(p->x, i), sum = vec_zero();
-            double ei = p->volume_mismatch[i];
-            pair pr;
-            FOR_EACH_PAIR (k, p->x, nl, i, xi, pr) {
-                sum = vec_add(sum, volume_correction_pair(ei, p->volume_mismatch[pr.j], pr.r_ji,
-                                                          pr.f, p->vol[pr.j]));
-            }
-            /* beyond the compression gradient's floor, as the shifting (shifting.h), and at
-               most U_max / 2, Eq. (7)'s cap (no relative-speed bound here) */
-            sum = gradient_beyond_floor(sum, fields_compression_gradient(p, i));
-            du = shifting_limit(vec_scale(sum, scale), INFINITY, pp->shift_u_max);
-        }
-        vec_store(p->correction, i, du);
+    if (p->lambda[i] < SHIFTING_LAMBDA_MIN) return vec_zero();
+    vec sum = vec_zero();
+    double ei = p->volume_mismatch[i];
+    pair pr;
+    FOR_EACH_PAIR_OF_ROW(row, pr)
+    {
+        sum = vec_add(
+            sum, volume_correction_pair(ei, p->volume_mismatch[pr.j], pr.r_ji, pr.f, p->vol[pr.j]));
     }
+    /* beyond the compression gradient's floor, as the shifting (shifting.h), and at most
+       U_max / 2, Eq. (7)'s cap (no relative-speed bound here) */
+    sum = gradient_beyond_floor(sum, fields_compression_gradient(p, i));
+    return shifting_limit(vec_scale(sum, -pp->k.h * pp->shift_u_max), INFINITY, pp->shift_u_max);
 }
 
 static int reserve(volume_correction_work *w, size_t n_bodies)
@@ -157,8 +151,4 @@ void volume_correction_band(const physics_params *pp, particles *p, const neighb
     surface_band_mismatch(&pp->k, p, nl);
 }
 
-void volume_correction_velocity(const physics_params *pp, particles *p, const neighbour_list *nl)
-{
-    tank_copy_to_ghosts(p, p->volume_mismatch);
-    correction_velocity(pp, p, nl);
-}
+void volume_correction_ghost_mismatch(particles *p) { tank_copy_to_ghosts(p, p->volume_mismatch); }

@@ -7,6 +7,7 @@
 
 #include "core/cells.h"
 #include "core/kernel.h"
+#include "core/pair.h"
 #include "core/particles.h"
 #include "scheme/bodies.h"
 #include "scheme/physics_params.h"
@@ -18,12 +19,13 @@ typedef struct {
     double *sums;    /* per body: sum V dv . n over its S_F, and sum V over it */
 } volume_correction_work;
 
-#define volume_correction_lattice_sum DIM_NAME(volume_correction_lattice_sum)
-#define volume_correction_mismatch    DIM_NAME(volume_correction_mismatch)
-#define volume_correction_band        DIM_NAME(volume_correction_band)
-#define volume_correction_velocity    DIM_NAME(volume_correction_velocity)
-#define volume_correction_per_body    DIM_NAME(volume_correction_per_body)
-#define volume_correction_free        DIM_NAME(volume_correction_free)
+#define volume_correction_lattice_sum    DIM_NAME(volume_correction_lattice_sum)
+#define volume_correction_mismatch       DIM_NAME(volume_correction_mismatch)
+#define volume_correction_band           DIM_NAME(volume_correction_band)
+#define volume_correction_ghost_mismatch DIM_NAME(volume_correction_ghost_mismatch)
+#define volume_correction_velocity_of    DIM_NAME(volume_correction_velocity_of)
+#define volume_correction_per_body       DIM_NAME(volume_correction_per_body)
+#define volume_correction_free           DIM_NAME(volume_correction_free)
 
 /* kappa = dr^n sum_j W(|r_j|) over the points r_j of the lattice of spacing dr (self
  * included): Eq. (11)'s reading of a regular lattice. */
@@ -42,12 +44,18 @@ double volume_correction_lattice_sum(const kernel *k, double dr);
  * The particles then move with u + du + dv, and their density is resampled along dv
  * (rhs.c, physics/volume_correction.h); masses and velocities are left alone.
  * volume_correction_mismatch writes e off S_F, volume_correction_band e in S_F,
- * volume_correction_velocity dv (and e of the walls' images), volume_correction_per_body
+ * volume_correction_ghost_mismatch e of the walls' images, volume_correction_velocity_of dv,
+ * volume_correction_per_body
  * the normal component in S_F (the bodies' sums through d, NULL on one process; returns 0,
  * or -1 when out of memory). */
 void volume_correction_mismatch(const physics_params *pp, particles *p);
 void volume_correction_band(const physics_params *pp, particles *p, const neighbour_list *nl);
-void volume_correction_velocity(const physics_params *pp, particles *p, const neighbour_list *nl);
+/* The walls' images take their sources' e, which the velocity reads at the neighbours. */
+void volume_correction_ghost_mismatch(particles *p);
+/* dv of fluid particle i from its row's geometry (0 where lambda < 0.4); the pass runs it
+ * beside the shifting over the same row (fields_shifting_and_correction, fields.h). */
+vec volume_correction_velocity_of(const physics_params *pp, const particles *p, size_t i,
+                                  const pair_row *row);
 int volume_correction_per_body(particles *p, const bodies *b, const bodies_domain *d,
                                volume_correction_work *w);
 void volume_correction_free(volume_correction_work *w);
