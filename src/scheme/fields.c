@@ -97,8 +97,7 @@ static vec shifting_velocity(const physics_params *pp, const particles *p, size_
     vec ui = vec_load(p->u, i), sum = vec_zero();
     double max_relative2 = 0.0;
     pair pr;
-    FOR_EACH_PAIR_OF_ROW(row, pr)
-    {
+    FOR_EACH_PAIR_OF_ROW (row, pr) {
         sum = vec_add(sum, shifting_pair(pr.w, pp->w_dr, pr.r_ji, pr.f, p->vol[pr.j]));
         double rel2 = vec_norm2(vec_sub(vec_load(p->u, pr.j), ui));
         if (rel2 > max_relative2) max_relative2 = rel2;

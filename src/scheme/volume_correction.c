@@ -63,8 +63,7 @@ vec volume_correction_velocity_of(const physics_params *pp, const particles *p, 
     vec sum = vec_zero();
     double ei = p->volume_mismatch[i];
     pair pr;
-    FOR_EACH_PAIR_OF_ROW(row, pr)
-    {
+    FOR_EACH_PAIR_OF_ROW (row, pr) {
         sum = vec_add(
             sum, volume_correction_pair(ei, p->volume_mismatch[pr.j], pr.r_ji, pr.f, p->vol[pr.j]));
     }
