@@ -99,9 +99,6 @@ int cells_bin(cell_grid *g, double *const x[DIM], size_t n)
     }
     for (size_t c = g->n_cells; c > 0; c--) g->start[c] = g->start[c - 1];
     g->start[0] = 0;
-#pragma omp parallel for schedule(static)
-    for (size_t m = 0; m < n; m++)
-        for (int d = 0; d < DIM; d++) g->xs[d][m] = x[d][g->item[m]];
     return 0;
 }
 
@@ -159,6 +156,10 @@ int neighbours_build(neighbour_list *nl, const cell_grid *g, double *const x[DIM
 {
     double r2max = radius * radius;
     cells_scan_fn scan = cells_scan_form();
+    /* the binned positions in item order, which the scan reads a block at a time */
+#pragma omp parallel for schedule(static)
+    for (size_t m = 0; m < g->start[g->n_cells]; m++)
+        for (int d = 0; d < DIM; d++) g->xs[d][m] = x[d][g->item[m]];
     nl->radius = radius;
     nl->n_rows = n_rows;
     if (nl->row_capacity == 0) nl->row_capacity = DIM == 2 ? 64 : 128;

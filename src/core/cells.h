@@ -16,7 +16,7 @@ typedef struct {
     size_t *start;     /* n_cells + 1: items of cell c are item[start[c] .. start[c+1]) */
     uint32_t *item;    /* particle indices, ascending within each cell */
     uint32_t *cell_of; /* cell of each binned particle */
-    double *xs[DIM];   /* the binned particles' positions in item order (core/cells_scan.h) */
+    double *xs[DIM];   /* their positions in item order, set by neighbours_build (cells_scan.h) */
     size_t item_capacity, cells_capacity;
 } cell_grid;
 

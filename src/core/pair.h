@@ -65,32 +65,9 @@ static inline bool pair_at(const int32_t *row, const double *columns, size_t str
     return true;
 }
 
-/* The one neighbour loop of every pass: the pairs (i, j) of particle i at xi whose distance
- * is within 2h, one by one in `pr` (declared by the caller), in the list's order:
- *
- *     pair pr;
- *     FOR_EACH_PAIR (k, p->x, nl, i, xi, pr) { ... pr.j, pr.r_ji, pr.w, pr.f ... }
- *
- * Each pass supplies only its pair functions (src/physics). `continue` goes to the next pair,
- * `break` ends the loop. The geometry of the whole row is computed first (pairs_geometry, into
- * columns on the stack), then the body runs over the entries within 2h: the same pairs in the
- * same order with the same values, so the same sums, but the square roots and kernels of the
- * row computed side by side, not one pair's chain of dependent operations after the other's. */
-#define FOR_EACH_PAIR(k, x, nl, i, xi, pr)                                                         \
-    for (size_t pr##_stride = pair_columns_stride((nl)->count[i]), pr##_once = 1; pr##_once;       \
-         pr##_once = 0)                                                                            \
-        for (double pr##_columns[PAIR_COLUMNS * pr##_stride],                                      \
-             *pr##_go = (pairs_geometry(k, x, neighbour_row(nl, i), (nl)->count[i], xi,            \
-                                        pr##_columns, pr##_stride),                                \
-                         pr##_columns);                                                            \
-             pr##_go; pr##_go = NULL)                                                              \
-            for (int32_t pr##_n = 0; pr##_n < (nl)->count[i]; pr##_n++)                            \
-                if (!pair_at(neighbour_row(nl, i), pr##_columns, pr##_stride, pr##_n,              \
-                             (k)->support2, &(pr))) {                                              \
-                } else
-
 /* One row's geometry kept for several pair loops over it: a pass that needs two sums of the
  * same neighbours (the shifting and the correction velocity) computes the row once.
+ * FOR_EACH_PAIR below is the two in one statement.
  *
  *     PAIR_ROW (k, p->x, nl, i, xi, row);          declares `row`, its columns on the stack
  *     pair pr;
@@ -114,6 +91,30 @@ typedef struct {
     for (int32_t pr##_n = 0; pr##_n < (rw)->count; pr##_n++)                                       \
         if (!pair_at((rw)->row, (rw)->columns, (rw)->stride, pr##_n, (rw)->support2, &(pr))) {     \
         } else
+
+/* The one neighbour loop of every pass: the pairs (i, j) of particle i at xi whose distance
+ * is within 2h, one by one in `pr` (declared by the caller), in the list's order:
+ *
+ *     pair pr;
+ *     FOR_EACH_PAIR (k, p->x, nl, i, xi, pr) { ... pr.j, pr.r_ji, pr.w, pr.f ... }
+ *
+ * Each pass supplies only its pair functions (src/physics). `continue` goes to the next pair,
+ * `break` ends the loop. The geometry of the whole row is computed first (pairs_geometry, into
+ * columns on the stack), then the body runs over the entries within 2h: the same pairs in the
+ * same order with the same values, so the same sums, but the square roots and kernels of the
+ * row computed side by side, not one pair's chain of dependent operations after the other's. */
+#define FOR_EACH_PAIR(k, x, nl, i, xi, pr)                                                         \
+    for (size_t pr##_stride = pair_columns_stride((nl)->count[i]), pr##_once = 1; pr##_once;       \
+         pr##_once = 0)                                                                            \
+        for (double pr##_columns[PAIR_COLUMNS * pr##_stride],                                      \
+             *pr##_go = (pairs_geometry(k, x, neighbour_row(nl, i), (nl)->count[i], xi,            \
+                                        pr##_columns, pr##_stride),                                \
+                         pr##_columns);                                                            \
+             pr##_go; pr##_go = NULL)                                                              \
+            for (pair_row pr##_row = {neighbour_row(nl, i), (nl)->count[i], pr##_stride,           \
+                                      pr##_columns, (k)->support2};                                \
+                 pr##_row.row; pr##_row.row = NULL)                                                \
+                FOR_EACH_PAIR_OF_ROW (&pr##_row, pr)
 
 /* FOR_EACH_PAIR over the neighbours for which `keep` holds, an expression of `pr.j` tested
  * before any geometry: for a pass that reads only a few of the neighbours (the free surface's)

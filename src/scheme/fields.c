@@ -93,6 +93,7 @@ void fields_geometry(const physics_params *pp, const tank *t, particles *p,
 static vec shifting_velocity(const physics_params *pp, const particles *p, size_t i,
                              const pair_row *row)
 {
+    if (p->lambda[i] < SHIFTING_LAMBDA_MIN) return vec_zero();
     const kernel *k = &pp->k;
     vec ui = vec_load(p->u, i), sum = vec_zero();
     double max_relative2 = 0.0;
@@ -105,7 +106,6 @@ static vec shifting_velocity(const physics_params *pp, const particles *p, size_
     sum = gradient_beyond_floor(sum, fields_compression_gradient(p, i));
     vec du = vec_scale(sum, -k->h * pp->shift_u_max);
     du = shifting_limit(du, sqrt(max_relative2), pp->shift_u_max);
-    if (p->lambda[i] < SHIFTING_LAMBDA_MIN) return vec_zero();
     if (p->surface[i] != SURFACE_INTERIOR)
         return shifting_tangential(du, vec_load(p->normal, i)); /* the surface's */
     return du;
@@ -115,7 +115,6 @@ void fields_shifting_and_correction(const physics_params *pp, particles *p,
                                     const neighbour_list *nl, bool shift, bool correct)
 {
     const kernel *k = &pp->k;
-    if (correct) volume_correction_ghost_mismatch(p);
 #pragma omp parallel for schedule(static)
     for (size_t i = 0; i < p->n_fluid; i++) {
         vec xi = vec_load(p->x, i);

@@ -90,6 +90,8 @@ static bool shifts_or_corrects(const solver *s) { return s->pp.shifting || corre
 static long shifting_and_correction(solver *s, const tank_frame *frame)
 {
     (void)frame;
+    /* the walls' images read e here, after the driver has brought the halo's e up to date */
+    if (corrects(s)) volume_correction_ghost_mismatch(&s->p);
     fields_shifting_and_correction(&s->pp, &s->p, &s->nl, s->pp.shifting, corrects(s));
     return 0;
 }

@@ -44,13 +44,12 @@ double volume_correction_lattice_sum(const kernel *k, double dr);
  * The particles then move with u + du + dv, and their density is resampled along dv
  * (rhs.c, physics/volume_correction.h); masses and velocities are left alone.
  * volume_correction_mismatch writes e off S_F, volume_correction_band e in S_F,
- * volume_correction_ghost_mismatch e of the walls' images, volume_correction_velocity_of dv,
- * volume_correction_per_body
- * the normal component in S_F (the bodies' sums through d, NULL on one process; returns 0,
+ * volume_correction_ghost_mismatch e of the walls' images (after an MPI run's halo has
+ * its sources' e), volume_correction_velocity_of dv, volume_correction_per_body the normal
+ * component in S_F (the bodies' sums through d, NULL on one process; returns 0,
  * or -1 when out of memory). */
 void volume_correction_mismatch(const physics_params *pp, particles *p);
 void volume_correction_band(const physics_params *pp, particles *p, const neighbour_list *nl);
-/* The walls' images take their sources' e, which the velocity reads at the neighbours. */
 void volume_correction_ghost_mismatch(particles *p);
 /* dv of fluid particle i from its row's geometry (0 where lambda < 0.4); the pass runs it
  * beside the shifting over the same row (fields_shifting_and_correction, fields.h). */
