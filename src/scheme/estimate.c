@@ -57,12 +57,11 @@ void DIM_NAME(estimate_run)(const config *cfg, const derived *dv, int threads, r
     double store = (double)particles_bytes_per_slot() * capacity;
     /* alloc_work in solver.c: y0, sum, the rates (RK_VARS each), scratch, and the order */
     double work = ((3.0 * RK_VARS + 1.0) * sizeof(double) + sizeof(size_t)) * n;
-    /* neighbours_build: a row of row_capacity int32 per fluid particle, 64 (2D) or 128 (3D)
-       entries, or 1.25 times the most neighbours when a row overflows; at rest a particle
-       has about the lattice points of the ball of radius reach */
+    /* neighbours_build: a row of row_capacity int32 per fluid particle, a sixteenth more than
+       the longest row in whole blocks of eight; at rest a particle has about the lattice
+       points of the ball of radius reach */
     double ball = DIM == 2 ? M_PI * reach * reach : 4.0 / 3.0 * M_PI * reach * reach * reach;
-    double row = DIM == 2 ? 64.0 : 128.0, inside = ball / cell_volume;
-    if (inside > row) row = ceil(1.25 * inside);
+    double row = 8.0 * ceil(1.0625 * ball / cell_volume / 8.0);
     double lists = (row + 1.0) * sizeof(int32_t) * n;
     /* the cell grid: start per cell, item, cell_of and the position copy xs per particle */
     double grid =
