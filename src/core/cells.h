@@ -25,7 +25,7 @@ typedef struct {
 typedef struct {
     size_t n_rows, row_capacity, capacity_rows, index_capacity;
     int32_t *count;
-    int32_t *index; /* n_rows x row_capacity */
+    int32_t *index;  /* n_rows x row_capacity */
     int32_t longest; /* the longest row of the last build, which sizes the next one's rows */
     double radius;
 } neighbour_list;
