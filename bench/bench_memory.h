@@ -12,7 +12,7 @@ static double bytes_per_particle(const solver *s)
     /* the double arrays of particles.c, the id, ghost source and walls, surface flags */
     double store = (double)particles_bytes_per_slot() * (double)p->capacity;
     double work = (2.0 * RK_VARS + RK_VARS + 1.0) * sizeof(double) * (double)p->n_fluid +
-                  sizeof(size_t) * (double)p->n_fluid;
+                  sizeof(uint32_t) * (double)p->n_fluid;
     double lists = (double)s->nl.index_capacity * sizeof(int32_t) +
                    (double)s->nl.capacity_rows * sizeof(int32_t);
     double cells = (double)s->grid.item_capacity * (2.0 * sizeof(uint32_t) + DIM * sizeof(double)) +

@@ -74,7 +74,7 @@ static void move(const box *b, particles *p)
 /* Stable sort of the fluid by cell, as the solver does every step. */
 static void sort_by_cell(box *b, particles *p)
 {
-    size_t *order = malloc((p->n_fluid + 1) * sizeof *order);
+    uint32_t *order = malloc((p->n_fluid + 1) * sizeof *order);
     double *scratch = malloc((p->n_fluid + 1) * sizeof *scratch);
     assert_int_equal(cells_bin(&b->g, p->x, p->n_fluid), 0);
     cells_sort_order(&b->g, p->n_fluid, order);

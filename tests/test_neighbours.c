@@ -146,7 +146,7 @@ static void test_sort_by_cell(void **state)
     }
     cells_setup(&grid, lo, hi, 0.1);
     cells_bin(&grid, p.x, n);
-    size_t *order = malloc(n * sizeof *order);
+    uint32_t *order = malloc(n * sizeof *order);
     double *scratch = malloc(n * sizeof *scratch);
     cells_sort_order(&grid, n, order);
     particles_permute_fluid(&p, order, scratch);

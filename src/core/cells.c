@@ -102,7 +102,7 @@ int cells_bin(cell_grid *g, double *const x[DIM], size_t n)
     return 0;
 }
 
-void cells_sort_order(const cell_grid *g, size_t n, size_t *order)
+void cells_sort_order(const cell_grid *g, size_t n, uint32_t *order)
 {
     size_t k = 0;
     for (size_t m = 0; m < g->start[g->n_cells]; m++) {

@@ -71,7 +71,7 @@ static inline size_t cells_strip_of(const cell_grid *g, double x)
 int cells_bin(cell_grid *g, double *const x[DIM], size_t n);
 /* After cells_bin of n particles: order[k] = the particle that goes to slot k when particles
  * are sorted by cell (stable: ascending index within a cell). */
-void cells_sort_order(const cell_grid *g, size_t n, size_t *order);
+void cells_sort_order(const cell_grid *g, size_t n, uint32_t *order);
 /* Lists, for each of the first n_rows particles, its neighbours within `radius` among all the
  * binned particles. Returns 0, or -1 when out of memory. */
 int neighbours_build(neighbour_list *nl, const cell_grid *g, double *const x[DIM], size_t n_rows,

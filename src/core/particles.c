@@ -64,14 +64,14 @@ PARTICLE_FIELDS(FITS_SCALAR, FITS_VECTOR)
 PARTICLE_FIELDS(GHOST_RULE_SCALAR, GHOST_RULE_VECTOR)
 
 /* a[k] = a[order[k]] for elements of `size` bytes (at most a double's), through scratch */
-static void permute(void *a, size_t size, const size_t *order, size_t n, double *scratch)
+static void permute(void *a, size_t size, const uint32_t *order, size_t n, double *scratch)
 {
     char *bytes = a, *tmp = (char *)scratch;
     for (size_t k = 0; k < n; k++) memcpy(tmp + k * size, bytes + order[k] * size, size);
     memcpy(bytes, tmp, n * size);
 }
 
-void particles_permute_fluid(particles *p, const size_t *order, double *scratch)
+void particles_permute_fluid(particles *p, const uint32_t *order, double *scratch)
 {
     size_t n = p->n_fluid;
 #define PERMUTE_SCALAR(type, name, flags, snapshot, comment)                                       \

@@ -178,6 +178,6 @@ int particles_reserve(particles *p, size_t capacity);
 size_t particles_bytes_per_slot(void);
 /* Reorders the persistent fluid state (the fields marked FIELD_STATE: id, x, u, rho, m) so
  * that new slot k holds old particle order[k]; scratch needs n_fluid doubles. */
-void particles_permute_fluid(particles *p, const size_t *order, double *scratch);
+void particles_permute_fluid(particles *p, const uint32_t *order, double *scratch);
 
 #endif

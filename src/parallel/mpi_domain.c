@@ -84,7 +84,7 @@ void mpi_domain_attach(mpi_domain *d, solver *s, MPI_Comm comm)
     size_t n = p->n_fluid, first, end;
     if (ranks > 1 && n == (size_t)s->dv.n_fluid) {
         reduce_share(n, rank, ranks, &first, &end);
-        for (size_t k = 0; k < end - first; k++) s->order[k] = first + k;
+        for (size_t k = 0; k < end - first; k++) s->order[k] = (uint32_t)(first + k);
         p->n_fluid = end - first;
         particles_permute_fluid(p, s->order, s->scratch);
     }

@@ -56,7 +56,7 @@ void DIM_NAME(estimate_run)(const config *cfg, const derived *dv, int threads, r
     while ((double)capacity < total) capacity = particles_grown(capacity);
     double store = (double)particles_bytes_per_slot() * capacity;
     /* alloc_work in solver.c: y0, sum, the rates (RK_VARS each), scratch, and the order */
-    double work = ((3.0 * RK_VARS + 1.0) * sizeof(double) + sizeof(size_t)) * n;
+    double work = ((3.0 * RK_VARS + 1.0) * sizeof(double) + sizeof(uint32_t)) * n;
     /* neighbours_build: a row of row_capacity int32 per fluid particle, a sixteenth more than
        the longest row in whole blocks of eight; at rest a particle has about the lattice
        points of the ball of radius reach */

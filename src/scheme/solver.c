@@ -64,7 +64,7 @@ int solver_reserve(solver *s, size_t n_fluid)
         if (grow((void **)&s->k.d##name[d], n, sizeof(double))) return -1;
     PARTICLE_INTEGRATED(GROW_RATE_SCALAR, GROW_RATE_VECTOR)
     if (grow((void **)&s->scratch, n, sizeof(double)) ||
-        grow((void **)&s->order, n, sizeof(size_t)))
+        grow((void **)&s->order, n, sizeof(uint32_t)))
         return -1;
     s->work_capacity = n;
     return 0;

@@ -61,7 +61,7 @@ typedef struct solver {
     double *sum[RK_VARS]; /* weighted sum of the stage rates */
     rates k;              /* rates of the current stage */
     double *scratch;      /* n_fluid doubles */
-    size_t *order;        /* n_fluid sort permutation */
+    uint32_t *order;      /* n_fluid sort permutation (32-bit, as the cell grid's items) */
     size_t work_capacity; /* the fluid particles these arrays hold room for */
 
     double t, dt;   /* time; size of the prepared step */
