@@ -151,16 +151,6 @@ static int32_t scan_neighbours(const cell_grid *g, double *const x[DIM], size_t 
     return found;
 }
 
-/* The row length for a longest row of `longest` entries: a sixteenth more, so that the rows
- * a step later, whose particles have moved by less than the skin, rarely overflow (on issue
- * 22's 2D case and INM2 3D at N = 20, only the first build did), rounded up to whole blocks of
- * eight entries (the SIMD scan's). */
-static size_t row_room(int32_t longest)
-{
-    size_t room = (size_t)longest + (size_t)longest / 16;
-    return (room + 7) / 8 * 8;
-}
-
 int neighbours_build(neighbour_list *nl, const cell_grid *g, double *const x[DIM], size_t n_rows,
                      double radius)
 {
@@ -176,7 +166,7 @@ int neighbours_build(neighbour_list *nl, const cell_grid *g, double *const x[DIM
        step); the first build guesses, 64 entries in 2D and 128 in 3D, and at rest a particle
        has about 48 (2D) or 127 (3D) within 2h and the skin */
     if (nl->longest > 0)
-        nl->row_capacity = row_room(nl->longest);
+        nl->row_capacity = neighbours_row_room(nl->longest);
     else if (nl->row_capacity == 0)
         nl->row_capacity = DIM == 2 ? 64 : 128;
     for (;;) {
@@ -205,6 +195,6 @@ int neighbours_build(neighbour_list *nl, const cell_grid *g, double *const x[DIM
         nl->longest = most;
         if (most <= cap) return 0;
         /* a row overflowed (strong compression): redo with room to spare */
-        nl->row_capacity = row_room(most);
+        nl->row_capacity = neighbours_row_room(most);
     }
 }

@@ -72,6 +72,15 @@ int cells_bin(cell_grid *g, double *const x[DIM], size_t n);
 /* After cells_bin of n particles: order[k] = the particle that goes to slot k when particles
  * are sorted by cell (stable: ascending index within a cell). */
 void cells_sort_order(const cell_grid *g, size_t n, uint32_t *order);
+/* The row length neighbours_build gives rows whose longest has `longest` entries: a
+ * sixteenth more, so that the rows a step later, whose particles have moved by less than the
+ * skin, rarely overflow (on issue 22's 2D case and INM2 3D at N = 20, only the first build
+ * did), rounded up to whole blocks of eight entries (the SIMD scan's). */
+static inline size_t neighbours_row_room(int32_t longest)
+{
+    size_t room = (size_t)longest + (size_t)longest / 16;
+    return (room + 7) / 8 * 8;
+}
 /* Lists, for each of the first n_rows particles, its neighbours within `radius` among all the
  * binned particles. Returns 0, or -1 when out of memory. */
 int neighbours_build(neighbour_list *nl, const cell_grid *g, double *const x[DIM], size_t n_rows,

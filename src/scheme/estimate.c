@@ -1,6 +1,7 @@
 /* estimate: memory and wall time of a case before it runs (docs/checks.md). Compiled for
  * DIM = 2 and 3: the particle store's bytes per slot and the RK4 work arrays depend on DIM. */
 #include "scheme/estimate.h"
+#include "core/cells.h"
 #include "core/particles.h"
 #include "scheme/solver.h"
 
@@ -57,11 +58,10 @@ void DIM_NAME(estimate_run)(const config *cfg, const derived *dv, int threads, r
     double store = (double)particles_bytes_per_slot() * capacity;
     /* alloc_work in solver.c: y0, sum, the rates (RK_VARS each), scratch, and the order */
     double work = ((3.0 * RK_VARS + 1.0) * sizeof(double) + sizeof(uint32_t)) * n;
-    /* neighbours_build: a row of row_capacity int32 per fluid particle, a sixteenth more than
-       the longest row in whole blocks of eight; at rest a particle has about the lattice
-       points of the ball of radius reach */
+    /* neighbours_build: a row of int32 per fluid particle, sized by the longest row; at rest
+       a particle has about the lattice points of the ball of radius reach */
     double ball = DIM == 2 ? M_PI * reach * reach : 4.0 / 3.0 * M_PI * reach * reach * reach;
-    double row = 8.0 * ceil(1.0625 * ball / cell_volume / 8.0);
+    double row = (double)neighbours_row_room((int32_t)ceil(ball / cell_volume));
     double lists = (row + 1.0) * sizeof(int32_t) * n;
     /* the cell grid: start per cell, item, cell_of and the position copy xs per particle */
     double grid =

@@ -88,12 +88,11 @@ void fields_geometry(const physics_params *pp, const tank *t, particles *p,
 
 /* Eq. (7): du*_i = -xi h U_max sum_j [1 + R (W_ij/W(dr))^4] grad_i W_ij V_j, the sum taken
  * beyond the floor of the liquid's own compression gradient (shifting.h), limited, then
- * made tangential in S_F and switched off where lambda < 0.4 (drops and jets: no reliable
- * normal; theory §4, inferred from Sun et al. 2017). */
+ * made tangential in S_F; the pass below switches it off where lambda < 0.4 (drops and jets:
+ * no reliable normal; theory §4, inferred from Sun et al. 2017). */
 static vec shifting_velocity(const physics_params *pp, const particles *p, size_t i,
                              const pair_row *row)
 {
-    if (p->lambda[i] < SHIFTING_LAMBDA_MIN) return vec_zero();
     const kernel *k = &pp->k;
     vec ui = vec_load(p->u, i), sum = vec_zero();
     double max_relative2 = 0.0;
@@ -117,6 +116,11 @@ void fields_shifting_and_correction(const physics_params *pp, particles *p,
     const kernel *k = &pp->k;
 #pragma omp parallel for schedule(static)
     for (size_t i = 0; i < p->n_fluid; i++) {
+        if (p->lambda[i] < SHIFTING_LAMBDA_MIN) { /* neither moves it: no row geometry */
+            if (shift) vec_store(p->shift, i, vec_zero());
+            if (correct) vec_store(p->correction, i, vec_zero());
+            continue;
+        }
         vec xi = vec_load(p->x, i);
         PAIR_ROW(k, p->x, nl, i, xi, row);
         if (shift) vec_store(p->shift, i, shifting_velocity(pp, p, i, &row));

@@ -59,7 +59,6 @@ static void surface_band_mismatch(const kernel *k, particles *p, const neighbour
 vec volume_correction_velocity_of(const physics_params *pp, const particles *p, size_t i,
                                   const pair_row *row)
 {
-    if (p->lambda[i] < SHIFTING_LAMBDA_MIN) return vec_zero();
     vec sum = vec_zero();
     double ei = p->volume_mismatch[i];
     pair pr;

@@ -51,8 +51,9 @@ double volume_correction_lattice_sum(const kernel *k, double dr);
 void volume_correction_mismatch(const physics_params *pp, particles *p);
 void volume_correction_band(const physics_params *pp, particles *p, const neighbour_list *nl);
 void volume_correction_ghost_mismatch(particles *p);
-/* dv of fluid particle i from its row's geometry (0 where lambda < 0.4); the pass runs it
- * beside the shifting over the same row (fields_shifting_and_correction, fields.h). */
+/* dv of fluid particle i from its row's geometry, for lambda >= 0.4 (below, the pass sets 0
+ * without a row); the pass runs it beside the shifting over the same row
+ * (fields_shifting_and_correction, fields.h). */
 vec volume_correction_velocity_of(const physics_params *pp, const particles *p, size_t i,
                                   const pair_row *row);
 int volume_correction_per_body(particles *p, const bodies *b, const bodies_domain *d,
