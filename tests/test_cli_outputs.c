@@ -127,17 +127,19 @@ static void test_volume_command_matches_series(void **state)
     const double *t = table_column(&ts, "t"), *eps_v1 = table_column(&ts, "eps_v1");
     const double *eps_gm = table_column(&ts, "eps_gm");
     const double *n_free = table_column(&ts, "n_free_surface");
+    const double *eps_fs = table_column(&ts, "eps_fs");
     const char header[] = "t,eps_v1,eps_gm,n_free_surface,n_clumped,nearest_free,nearest_band,"
-                          "nearest_interior\n";
+                          "nearest_interior,eps_fs\n";
     assert_true(strncmp(out, header, strlen(header)) == 0);
     assert_true(t[0] == 0.0 && eps_gm[0] == 0.0);
     int rows = 0;
     for (const char *line = next_line(out); line && *line; line = next_line(line)) {
-        double tv, e1, egm, nearest[3];
+        double tv, e1, egm, nearest[3], efs;
         long free_surface, clumped;
-        assert_int_equal(sscanf(line, "%lf,%lf,%lf,%ld,%ld,%lf,%lf,%lf", &tv, &e1, &egm,
-                                &free_surface, &clumped, &nearest[0], &nearest[1], &nearest[2]),
-                         8);
+        assert_int_equal(sscanf(line, "%lf,%lf,%lf,%ld,%ld,%lf,%lf,%lf,%lf", &tv, &e1, &egm,
+                                &free_surface, &clumped, &nearest[0], &nearest[1], &nearest[2],
+                                &efs),
+                         9);
         assert_true(clumped >= 0 && clumped <= free_surface);
         /* the tiny case's lattice barely moves in 0.05 s: every nearest neighbour near dr */
         for (int c = 0; c < 3; c++) assert_true(nearest[c] > 0.8 && nearest[c] < 1.2);
@@ -147,6 +149,7 @@ static void test_volume_command_matches_series(void **state)
         assert_false(isnan(eps_gm[r]));
         assert_close(e1, eps_v1[r], 1e-12);
         assert_close(egm, eps_gm[r], 1e-12);
+        assert_close(efs, eps_fs[r], 1e-12);
         /* the packing's free surface is the run's: the same count as the time series' */
         assert_close((double)free_surface, n_free[r], 0.0);
         rows++;

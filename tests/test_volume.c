@@ -134,6 +134,57 @@ static void test_block_packing(void **state)
     solver_free(&s);
 }
 
+/* sum_j W_ij (self included) of a top-row particle of a lattice whose top row sits `gap` dr
+ * above the row below it (gap = 1: the flat lattice), each row below at dr from the next:
+ * the figure eps_fs compares with the flat surface's, summed here apart from the code's. */
+static double top_row_kernel_sum(const kernel *k, double dr, double gap)
+{
+    int reach = (int)ceil(2.0 * k->h / dr) + 1;
+    int reach_z = DIM == 3 ? reach : 0;
+    double sum = 0.0;
+    for (int b = 0; b <= reach; b++) {
+        double y = b == 0 ? 0.0 : gap + (double)(b - 1); /* depth of row b below the top, dr */
+        for (int a = -reach; a <= reach; a++)
+            for (int c = -reach_z; c <= reach_z; c++)
+                sum += kernel_w(k, dr * sqrt((double)(a * a + c * c) + y * y));
+    }
+    return sum;
+}
+
+/* eps_fs (volume.h) on the block: 0 on its flat lattice surface, to round-off; with the top
+ * row lowered by half a spacing (a surface layer packed tighter than the liquid), every
+ * free-surface particle counts S_flat / S_i of its V_i0, and eps_fs is their share of the
+ * particles times (S_flat / S_i - 1), with both sums taken on the lattice by
+ * top_row_kernel_sum. */
+static void test_free_surface_packing(void **state)
+{
+    (void)state;
+    config cfg;
+    load(&cfg, block_case);
+    solver s;
+    prepare(&s, &cfg);
+    particles *p = &s.p;
+    double dr = s.dv.dr, top = cfg.liquid_height - 0.5 * dr, cell = s.dv.cell_volume;
+    double flat = s.pp.surface_kernel_sum;
+    assert_close(flat, top_row_kernel_sum(&s.pp.k, dr, 1.0) * pow(dr, DIM), 1e-12);
+    double eps = volume_free_surface_packing(p, cell, flat, s.scratch, NULL);
+    printf("%dD block: eps_fs %.3e on the flat lattice surface\n", DIM, eps);
+    assert_close(eps, 0.0, 1e-12);
+    for (size_t i = 0; i < p->n_fluid; i++)
+        if (top - p->x[1][i] < 0.5 * dr) p->x[1][i] -= 0.5 * dr;
+    assert_int_equal(solver_prepare(&s, cfg.t_end), 0);
+    long n_free = 0;
+    for (size_t i = 0; i < p->n_fluid; i++) n_free += p->surface[i] == SURFACE_FREE;
+    assert_int_equal(n_free, (long)(p->n_fluid / (size_t)cfg.resolution));
+    double packed = top_row_kernel_sum(&s.pp.k, dr, 0.5) * pow(dr, DIM);
+    double expected = (double)n_free / (double)p->n_fluid * (flat / packed - 1.0);
+    eps = volume_free_surface_packing(p, cell, flat, s.scratch, NULL);
+    printf("%dD block, top row lowered by dr/2: eps_fs %.6e, expected %.6e\n", DIM, eps, expected);
+    assert_true(expected < -1e-3);
+    assert_close(eps, expected, 1e-12);
+    solver_free(&s);
+}
+
 /* Keeps the fluid particles for which keep() holds (the store is compacted in place). */
 static void keep_only(solver *s, int (*keep)(const double *x, const double *centre, double r),
                       const double *centre, double radius)
@@ -258,9 +309,8 @@ static void test_compressed_block(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_block_at_rest),
-        cmocka_unit_test(test_block_packing),
-        cmocka_unit_test(test_disc_outer_ring),
+        cmocka_unit_test(test_block_at_rest),        cmocka_unit_test(test_block_packing),
+        cmocka_unit_test(test_free_surface_packing), cmocka_unit_test(test_disc_outer_ring),
         cmocka_unit_test(test_compressed_block),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

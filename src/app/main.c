@@ -74,7 +74,7 @@ static int check_case(const config *cfg, bool print)
 static int volume_of_snapshots(char **paths, int n)
 {
     printf("t,eps_v1,eps_gm,n_free_surface,n_clumped,nearest_free,nearest_band,"
-           "nearest_interior\n");
+           "nearest_interior,eps_fs\n");
     for (int k = 0; k < n; k++) {
         char err[2048];
         snapshot_info info;
@@ -99,8 +99,9 @@ static int volume_of_snapshots(char **paths, int n)
             return status;
         }
         const surface_packing *q = &f.packing;
-        printf("%.10g,%.10g,%.10g,%ld,%ld,%.4f,%.4f,%.4f\n", time, f.eps_v1, f.eps_gm, q->n_free,
-               q->n_clumped, q->nearest_free, q->nearest_band, q->nearest_interior);
+        printf("%.10g,%.10g,%.10g,%ld,%ld,%.4f,%.4f,%.4f,%.10g\n", time, f.eps_v1, f.eps_gm,
+               q->n_free, q->n_clumped, q->nearest_free, q->nearest_band, q->nearest_interior,
+               f.eps_fs);
         fflush(stdout);
     }
     return RUN_OK;

@@ -41,10 +41,10 @@ int simulation_check_checkpoint_3d(const config *cfg, const struct checkpoint_da
                                    size_t err_len);
 
 struct snapshot_info;
-/* `vcsph volume`: eps_v1, eps_gm and the free surface's packing of one snapshot file whose
- * case is cfg. */
+/* `vcsph volume`: eps_v1, eps_gm, eps_fs and the free surface's packing of one snapshot file
+ * whose case is cfg. */
 typedef struct {
-    double eps_v1, eps_gm;
+    double eps_v1, eps_gm, eps_fs;
     surface_packing packing;
 } snapshot_figures;
 int snapshot_volume_2d(const config *cfg, const char *path, const struct snapshot_info *info,

@@ -43,6 +43,8 @@ int snapshot_volume_dim(const config *cfg, const char *path, const snapshot_info
             volume_errors ve;
             volume_compute(p, s.dv.cell_volume, s.scratch, NULL, &ve);
             out->eps_v1 = ve.eps_v1;
+            out->eps_fs = volume_free_surface_packing(p, s.dv.cell_volume, s.pp.surface_kernel_sum,
+                                                      s.scratch, NULL);
             surface_packing_compute(&s.pp.k, p, &s.nl, s.dv.dr, s.scratch, &out->packing);
             if (volume_graphical(p, s.tank.size, &s.dv, &volume, err, err_len))
                 status = RUN_FAILED;

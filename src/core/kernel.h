@@ -48,4 +48,19 @@ static inline double kernel_f(const kernel *k, double r)
     return k->f_norm * s * s * s;
 }
 
+/* dr^n sum_j W(|r_j|) over the points r_j of the lattice of spacing dr, self included: the
+ * whole lattice (Eq. 11's reading of a regular lattice, kappa), or with `half` only the rows
+ * at and below the particle's own along y, the top row of a flat free surface. */
+static inline double kernel_lattice_sum(const kernel *k, double dr, int half)
+{
+    int reach = (int)ceil(2.0 * k->h / dr);
+    int reach_z = DIM == 3 ? reach : 0;
+    double sum = 0.0;
+    for (int a = -reach; a <= reach; a++)
+        for (int b = -reach; b <= (half ? 0 : reach); b++)
+            for (int c = -reach_z; c <= reach_z; c++)
+                sum += kernel_w(k, dr * sqrt((double)(a * a + b * b + c * c)));
+    return sum * pow(dr, DIM);
+}
+
 #endif

@@ -47,6 +47,18 @@ void volume_compute(const particles *p, double cell_volume, double *scratch, con
     out->n_free_surface = reducer_total(r, n);
 }
 
+double volume_free_surface_packing(const particles *p, double cell_volume, double flat_surface_sum,
+                                   double *scratch, const reducer *r)
+{
+    double n_all = (double)reducer_total(r, (long)p->n_fluid);
+#pragma omp parallel for schedule(static)
+    for (size_t i = 0; i < p->n_fluid; i++)
+        scratch[i] = p->surface[i] == SURFACE_FREE
+                         ? flat_surface_sum / (p->kernel_sum[i] * cell_volume) - 1.0
+                         : 0.0;
+    return reducer_sum(r, scratch, p->n_fluid) / n_all;
+}
+
 /* Eq. (13) of particle i with the velocity field v: Vgeo_i^2 sum_j v_ji . grad_i W_ij */
 static double geometric_volume_rate(const kernel *k, const particles *p, const neighbour_list *nl,
                                     double *const v[DIM], size_t i)

@@ -24,6 +24,21 @@ typedef struct {
 void volume_compute(const particles *p, double cell_volume, double *scratch, const reducer *r,
                     volume_errors *out);
 
+#define volume_free_surface_packing DIM_NAME(volume_free_surface_packing)
+
+/* eps_fs, vcsph's (not the paper's): the volume the free surface's own particles lack against
+ * a flat lattice surface, over V0. Eq. (12) counts a free-surface particle at V_i0 whatever
+ * its neighbours; here it counts V_i0 S_flat / S_i, S_i = sum_j W_ij (self included) and
+ * S_flat the same sum of a flat lattice surface's top row (`flat_surface_sum` = dr^n S_flat,
+ * kernel_lattice_sum), so that a surface packed tighter than the lattice reads negative:
+ * eps_fs = sum over the free surface of (S_flat / S_i - 1) V_i0 / V0. 0 on a flat lattice
+ * surface; a surface with corners reads high (a disc cut from the lattice, R = 20 dr: +0.5 %,
+ * its staircase's corner particles having fewer neighbours than a flat row's). eps_v1 +
+ * eps_fs is the geometric volume error with the surface's own layer measured too
+ * (docs/volume.md). */
+double volume_free_surface_packing(const particles *p, double cell_volume, double flat_surface_sum,
+                                   double *scratch, const reducer *r);
+
 #define volume_rate DIM_NAME(volume_rate)
 
 /* The rate of eps_V^(1) carried by the particle motion, split by velocity: Eq. (13),

@@ -19,6 +19,7 @@ typedef struct {
     bool shifting;             /* xi = 1 of Table 1: particle shifting, Eq. (7), ALE terms */
     bool volume_correction;    /* model.volume_correction = geometric (volume_correction.h) */
     double lattice_kernel_sum; /* kappa = dr^n sum W on a lattice, Eq. (11) at rest */
+    double surface_kernel_sum; /* dr^n sum W of a flat lattice surface's top row (eps_fs) */
     double shift_u_max;        /* U_max of Eq. (7): the reference speed c0 / 10 of Eq. (6) */
     double w_dr;               /* W(dr) of Eq. (7) */
     double delta_c0_h;         /* delta c0 h of D^m, Eq. (5) */

@@ -32,7 +32,8 @@ static void physics_setup(solver *s)
     pp->shifting = mp.xi > 0.0;
     pp->shift_u_max = 0.1 * pp->c0; /* theory §4 (inferred from Sun et al. 2019) */
     pp->volume_correction = cfg->volume_correction == VOLUME_CORRECTION_GEOMETRIC;
-    pp->lattice_kernel_sum = volume_correction_lattice_sum(&pp->k, pp->dr);
+    pp->lattice_kernel_sum = kernel_lattice_sum(&pp->k, pp->dr, 0);
+    pp->surface_kernel_sum = kernel_lattice_sum(&pp->k, pp->dr, 1);
     pp->w_dr = kernel_w(&pp->k, pp->dr);
     pp->delta_c0_h = mp.delta * pp->c0 * pp->k.h;
     pp->les = cfg->les;

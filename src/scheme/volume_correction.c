@@ -11,18 +11,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-double volume_correction_lattice_sum(const kernel *k, double dr)
-{
-    int reach = (int)ceil(2.0 * k->h / dr);
-    int reach_z = DIM == 3 ? reach : 0;
-    double sum = 0.0;
-    for (int a = -reach; a <= reach; a++)
-        for (int b = -reach; b <= reach; b++)
-            for (int c = -reach_z; c <= reach_z; c++)
-                sum += kernel_w(k, dr * sqrt((double)(a * a + b * b + c * c)));
-    return sum * pow(dr, DIM);
-}
-
 /* e off S_F, where the kernel support is whole (Eq. 12 measures only there). */
 static void interior_mismatch(double lattice_sum, particles *p)
 {

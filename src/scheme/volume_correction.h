@@ -19,17 +19,12 @@ typedef struct {
     double *sums;    /* per body: sum V dv . n over its S_F, and sum V over it */
 } volume_correction_work;
 
-#define volume_correction_lattice_sum    DIM_NAME(volume_correction_lattice_sum)
 #define volume_correction_mismatch       DIM_NAME(volume_correction_mismatch)
 #define volume_correction_band           DIM_NAME(volume_correction_band)
 #define volume_correction_ghost_mismatch DIM_NAME(volume_correction_ghost_mismatch)
 #define volume_correction_velocity_of    DIM_NAME(volume_correction_velocity_of)
 #define volume_correction_per_body       DIM_NAME(volume_correction_per_body)
 #define volume_correction_free           DIM_NAME(volume_correction_free)
-
-/* kappa = dr^n sum_j W(|r_j|) over the points r_j of the lattice of spacing dr (self
- * included): Eq. (11)'s reading of a regular lattice. */
-double volume_correction_lattice_sum(const kernel *k, double dr);
 
 /* The correction velocity dv of the step into p->correction of the fluid, after the geometry
  * and before bounce-back, frozen over the RK stages like the shifting velocity, in four
