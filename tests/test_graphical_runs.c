@@ -3,9 +3,9 @@
  * geometric volume stays put, stays within the method's own resolution of it. INM2 3D
  * (cases/inm2-3d.ini) at N = 8 and 12 over its first 0.3 s: the liquid is 2 and 3 particles across
  * the width, and eps_v1 moves by at most 0.05 % meanwhile; eps_gm must stay within 0.2 % of 0 (the
- * issue's bound; measured: [-0.03, +0.09] % at N = 8, [0, +0.16] % at N = 12; before the walls'
- * images, the particle volume and the lattice-aligned pixels of docs/graphical-method.md, it fell
- * by 0.41 % at N = 8). */
+ * issue's bound; measured at 36abb60: [-0.11, 0] % at N = 8, [-0.07, +0.04] % at N = 12; before the
+ * walls' images, the particle volume and the lattice-aligned pixels of docs/graphical-method.md, it
+ * fell by 0.41 % at N = 8). */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
