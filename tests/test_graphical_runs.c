@@ -63,7 +63,7 @@ static void test_inm2_3d_n12(void **state)
  * liquid 5-11 % below eps_v1, which counts the free surface's layer at V_i0; eps_v1 + eps_fs,
  * which measures that layer, must agree with it within the issue's 0.5 % on average over the
  * rows after the first period (measured: -0.31 %, largest row 1.38 %; at N = 20 -0.01 % and
- * 0.89 %, at N = 25 over 20 periods +0.16 % and 1.11 %). The first assertion is the case's
+ * 0.89 %, at N = 25 over 20 periods +0.16 % and 1.11 %). The bound on eps_gm - eps_v1 is the case's
  * premise: without a fragmented surface layer there would be nothing for eps_fs to measure. */
 static void test_sap_surface_layer(void **state)
 {
