@@ -51,6 +51,13 @@ static void prepare(solver *s, const config *cfg)
     assert_int_equal(solver_prepare(s, cfg->t_end), 0);
 }
 
+/* The block of block_case, its geometry computed for t = 0. */
+static void prepare_block(config *cfg, solver *s)
+{
+    load(cfg, block_case);
+    prepare(s, cfg);
+}
+
 /* A block of lattice particles at rest (hydrostatic): its free surface is exactly the top
  * layer (walls are not free surface), S_F the particles less than 2h below it, and the
  * volume errors at t = 0 are the lattice-sum offsets of theory §1 times the share of
@@ -60,9 +67,8 @@ static void test_block_at_rest(void **state)
 {
     (void)state;
     config cfg;
-    load(&cfg, block_case);
     solver s;
-    prepare(&s, &cfg);
+    prepare_block(&cfg, &s);
     const particles *p = &s.p;
     double dr = s.dv.dr, top = cfg.liquid_height - 0.5 * dr, band = 2.0 * s.dv.h;
     size_t outside = 0, n_free = 0;
@@ -101,9 +107,8 @@ static void test_block_packing(void **state)
 {
     (void)state;
     config cfg;
-    load(&cfg, block_case);
     solver s;
-    prepare(&s, &cfg);
+    prepare_block(&cfg, &s);
     particles *p = &s.p;
     double dr = s.dv.dr;
     surface_packing sp;
@@ -160,9 +165,8 @@ static void test_free_surface_packing(void **state)
 {
     (void)state;
     config cfg;
-    load(&cfg, block_case);
     solver s;
-    prepare(&s, &cfg);
+    prepare_block(&cfg, &s);
     particles *p = &s.p;
     double dr = s.dv.dr, top = cfg.liquid_height - 0.5 * dr, cell = s.dv.cell_volume;
     double flat = s.pp.surface_kernel_sum;
