@@ -224,6 +224,8 @@ static bool gp_plot_volume(FILE *f, const plot_inputs *in)
     const curve curves[] = {
         {"eps_v1", "100*", "", "lines lw 2", "ε_V^{(1)}"},
         {"eps_gm", "100*", "", "linespoints lw 2 pt 7 ps 0.6", "ε_{GM} (Eq. 15)"},
+        /* the free surface's own layer measured too (docs/volume.md) */
+        {"eps_fs", "100*(column('eps_v1') + ", ")", "lines lw 1", "ε_V^{(1)} + ε_{fs}"},
         {"eta", "", "", "lines lw 1 lc rgb 'black' axes x1y2", "η"},
     };
     bool has_eta = csv_summary_values(&in->series, "eta") != NULL;
@@ -234,7 +236,7 @@ static bool gp_plot_volume(FILE *f, const plot_inputs *in)
     for (int k = 0; k < in->n_switch; k++)
         fprintf(f, "set arrow from %.10g, graph 0 to %.10g, graph 1 nohead dt 2 lc rgb 'gray40'\n",
                 in->switch_t[k], in->switch_t[k]);
-    gp_put_curves(f, series_data, &in->series, curves, has_eta ? 3 : 2);
+    gp_put_curves(f, series_data, &in->series, curves, has_eta ? 4 : 3);
     if (in->n_switch)
         fputs(", \\\n     keyentry with lines dt 2 lc rgb 'gray40' title 'η switch'", f);
     fputc('\n', f);
