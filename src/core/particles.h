@@ -164,14 +164,14 @@ static inline int particle_is_wall_image(const particles *p, size_t j)
 /* Allocates room for `capacity` particles (fluid + ghosts); all counts 0. Returns 0 or -1. */
 int particles_init(particles *p, size_t capacity);
 void particles_free(particles *p);
-/* The store's head-room: the lattice reserves its particles and an eighth more for the walls'
- * images (about 5 % of the fluid in the 2D benchmarks); past that it grows by a sixteenth at a
- * time, so that a store growing a few slots at a time (the images as they are made, a slab's
- * halo from step to step) is copied a few times at the start, not at every slot, and ends
- * within a sixteenth of what it holds (a narrow 3D tank's images are 40-45 % of its fluid:
- * grown by quarters, its store held 1.76 times the fluid for 1.44 used). estimate.c follows
- * the same two rules. */
-static inline size_t particles_initial_room(size_t n) { return n + n / 8 + 64; }
+/* The store's head-room: the lattice reserves its particles and a sixteenth more for the
+ * walls' images (about 5 % of the fluid in the 2D benchmarks of 1e5 particles and more); past
+ * that it grows by a sixteenth at a time, so that a store growing a few slots at a time (the
+ * images as they are made, a slab's halo from step to step) is copied a few times at the start,
+ * not at every slot, and ends within a sixteenth of what it holds (a narrow 3D tank's images
+ * are 40-45 % of its fluid: grown by quarters, its store held 1.76 times the fluid for 1.44
+ * used). estimate.c follows the same two rules. */
+static inline size_t particles_initial_room(size_t n) { return n + n / 16 + 64; }
 static inline size_t particles_grown(size_t capacity) { return capacity + capacity / 16; }
 /* Grows the store to hold at least `capacity` particles, and at least particles_grown of what
  * it held, keeping the contents. */
