@@ -38,13 +38,13 @@ typedef struct {
 
 static void rate_arrays_alloc(rate_arrays *a, size_t n)
 {
-    a->data = calloc(n * PARTICLE_N_INTEGRATED, sizeof(double));
+    a->data = calloc(n * PARTICLE_N_RATED, sizeof(double));
     assert_non_null(a->data);
     double *next = a->data;
 #define RATE_ARRAY_SCALAR(name) a->r.d##name = next, next += n;
 #define RATE_ARRAY_VECTOR(name)                                                                    \
     for (int d = 0; d < DIM; d++) a->r.d##name[d] = next, next += n;
-    PARTICLE_INTEGRATED(RATE_ARRAY_SCALAR, RATE_ARRAY_VECTOR)
+    PARTICLE_RATED(RATE_ARRAY_SCALAR, RATE_ARRAY_VECTOR)
 }
 
 /* The block of block_case, disordered (disordered_block.h): a particle count that is not a
@@ -78,7 +78,7 @@ static void rhs_lanes_give_the_scalar_bits(int width)
     lanes_block(&cfg, &s);
     particles *p = &s.p;
     tank_frame frame = solver_frame(&s, 0.0);
-    size_t n = p->n_fluid, n_values = n * PARTICLE_N_INTEGRATED;
+    size_t n = p->n_fluid, n_values = n * PARTICLE_N_RATED;
     rate_arrays scalar, lanes;
     rate_arrays_alloc(&scalar, n);
     rate_arrays_alloc(&lanes, n);

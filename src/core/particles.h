@@ -73,13 +73,17 @@ enum { FIELD_STATE = 1, FIELD_GHOST_COPY = 2, FIELD_GHOST_MIRROR = 4, FIELD_SURF
     SCALAR(int32_t, ghost_source, 0, NULL, "fluid index it mirrors")                               \
     SCALAR(uint8_t, ghost_map, 0, NULL, "its map from the source: an index into ghost_maps")
 
-/* The fields the RK4 integrator advances (scheme/integrate.c), each with its rate d<name>/dt
- * (scheme/rhs.h): the persistent state less the id. */
-#define PARTICLE_INTEGRATED(SCALAR, VECTOR) VECTOR(x) VECTOR(u) SCALAR(rho) SCALAR(m)
+/* The fields the RK4 integrator advances (scheme/integrate.c): the persistent state less the
+ * id. The right-hand side stores the rate d<name>/dt of each but the position (scheme/rhs.h),
+ * whose rate, the transport velocity, follows from the state and the frozen fields. */
+#define PARTICLE_INTEGRATED(SCALAR, VECTOR) VECTOR(x) PARTICLE_RATED(SCALAR, VECTOR)
+#define PARTICLE_RATED(SCALAR, VECTOR)      VECTOR(u) SCALAR(rho) SCALAR(m)
 #define PARTICLE_COUNT_SCALAR(name)         +1
 #define PARTICLE_COUNT_VECTOR(name)         +DIM
 /* integrated variables per particle, components counted */
 #define PARTICLE_N_INTEGRATED (0 PARTICLE_INTEGRATED(PARTICLE_COUNT_SCALAR, PARTICLE_COUNT_VECTOR))
+/* the stored rates per particle, components counted */
+#define PARTICLE_N_RATED (0 PARTICLE_RATED(PARTICLE_COUNT_SCALAR, PARTICLE_COUNT_VECTOR))
 
 /* A ghost's affine map from its source: position x_g = a x_i + b, a vector v_g = a v_i (a wall's
  * image: a reflection, or the product of the reflections of an edge or a corner; a halo copy:

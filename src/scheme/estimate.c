@@ -3,6 +3,7 @@
 #include "scheme/estimate.h"
 #include "core/cells.h"
 #include "core/particles.h"
+#include "scheme/models.h"
 #include "scheme/solver.h"
 
 #include <math.h>
@@ -56,8 +57,10 @@ void DIM_NAME(estimate_run)(const config *cfg, const derived *dv, int threads, r
     size_t capacity = particles_initial_room((size_t)n);
     while ((double)capacity < total) capacity = particles_grown(capacity);
     double store = (double)particles_bytes_per_slot() * capacity;
-    /* alloc_work in solver.c: y0, sum, the rates (RK_VARS each), scratch, and the order */
-    double work = ((3.0 * RK_VARS + 1.0) * sizeof(double) + sizeof(uint32_t)) * n;
+    /* solver_reserve: y0 and sum (RK_VARS each) and the stored rates (PARTICLE_N_RATED),
+       the masses' three only where they may vary (eta = 1 or the switch), scratch, the order */
+    double rk = 2.0 * RK_VARS + PARTICLE_N_RATED - (models_params(cfg->scheme).eta ? 0.0 : 3.0);
+    double work = ((rk + 1.0) * sizeof(double) + sizeof(uint32_t)) * n;
     /* neighbours_build: a row of int32 per fluid particle, sized by the longest row; at rest
        a particle has about the lattice points of the ball of radius reach */
     double ball = DIM == 2 ? M_PI * reach * reach : 4.0 / 3.0 * M_PI * reach * reach * reach;

@@ -73,14 +73,45 @@ static int build_neighbours(solver *s, double dt, const tank_frame *frame)
 #define INTEGRATED_MASK_VECTOR(name) | FIELD_MASK(name)
 #define INTEGRATED_FIELDS            (0 PARTICLE_INTEGRATED(INTEGRATED_MASK_SCALAR, INTEGRATED_MASK_VECTOR))
 
-/* The integrated variables and their rates, in the same order. */
+/* The integrated variables y[v] and, for v >= DIM, their stored rates rate[v] (the first DIM
+ * are the position's components, whose rate is the transport velocity, rhs.h). */
 static void rk_arrays(solver *s, double **y, double **rate)
 {
     int v = 0;
+    for (int d = 0; d < DIM; d++) y[v] = s->p.x[d], rate[v++] = NULL;
 #define RK_SCALAR(name) y[v] = s->p.name, rate[v++] = s->k.d##name;
 #define RK_VECTOR(name)                                                                            \
     for (int d = 0; d < DIM; d++) y[v] = s->p.name[d], rate[v++] = s->k.d##name[d];
-    PARTICLE_INTEGRATED(RK_SCALAR, RK_VECTOR)
+    PARTICLE_RATED(RK_SCALAR, RK_VECTOR)
+}
+
+/* One variable of particle i after a stage's rate k: the weighted sum gains w k, and the state
+ * moves on to the next stage's, y0 + c k, or after the last stage to the step's end, y0 + c sum
+ * (c = dt). */
+static inline void rk_variable(double *sum, double *y, const double *y0, size_t i, double k,
+                               double w, double c, bool first, bool last)
+{
+    sum[i] = (first ? 0.0 : sum[i]) + w * k;
+    y[i] = y0[i] + c * (last ? sum[i] : k);
+}
+
+/* After the right-hand side of stage `stage` (0..3) with weight w, every fluid particle's
+ * variables (rk_variable). One loop for the sum and the next state, so the state and the rates
+ * are read once; each particle's own entries only, and the position's rate taken from the
+ * stage's state before its velocity changes. */
+static void rk_accumulate(solver *s, double *const *y, double *const *rate, int n_vars, int stage,
+                          double w, double c)
+{
+    particles *p = &s->p;
+    bool first = stage == 0, last = stage == 3;
+#pragma omp parallel for schedule(static)
+    for (size_t i = 0; i < p->n_fluid; i++) {
+        vec transport = rhs_transport_velocity(&s->pp, p, i);
+        for (int v = 0; v < DIM; v++)
+            rk_variable(s->sum[v], y[v], s->y0[v], i, transport.c[v], w, c, first, last);
+        for (int v = DIM; v < n_vars; v++)
+            rk_variable(s->sum[v], y[v], s->y0[v], i, rate[v][i], w, c, first, last);
+    }
 }
 
 /* Input power of the tank's motion (theory §10): the power of the body force beyond the
@@ -124,9 +155,12 @@ static double moves_power(solver *s)
     particles *p = &s->p;
     const rates *k = &s->k;
     double g = s->cfg->gravity;
+    bool masses_vary = solver_masses_vary(s);
 #pragma omp parallel for schedule(static)
-    for (size_t i = 0; i < p->n_fluid; i++)
-        s->scratch[i] = g * (p->m[i] * (k->dx[1][i] - p->u[1][i]) + k->dm[i] * p->x[1][i]);
+    for (size_t i = 0; i < p->n_fluid; i++) {
+        double dx = rhs_transport_velocity(&s->pp, p, i).c[1], dm = masses_vary ? k->dm[i] : 0.0;
+        s->scratch[i] = g * (p->m[i] * (dx - p->u[1][i]) + dm * p->x[1][i]);
+    }
     return solver_sum(s, s->scratch, p->n_fluid);
 }
 
@@ -159,8 +193,9 @@ int solver_prepare(solver *s, double t_stop)
     if (s->t + dt > t_stop) dt = t_stop - s->t;
     s->dt = dt;
     tank_frame frame = solver_frame(s, s->t);
-    if (build_neighbours(s, dt, &frame)) return -1;
-    return passes_prepare(s, &frame);
+    if (build_neighbours(s, dt, &frame) || passes_prepare(s, &frame)) return -1;
+    /* eta is decided now (passes.c): the masses' RK4 arrays when they first vary */
+    return solver_masses_vary(s) ? solver_reserve_masses(s) : 0;
 }
 
 void solver_advance(solver *s, double t_stop)
@@ -172,16 +207,16 @@ void solver_advance(solver *s, double t_stop)
     double dt = s->dt;
     double *y[RK_VARS], *rate[RK_VARS];
     rk_arrays(s, y, rate);
-    for (int v = 0; v < RK_VARS; v++) memcpy(s->y0[v], y[v], n * sizeof(double));
+    /* constant masses stay as they are: m + c * 0 = m (the mass is the last variable) */
+    int n_vars = solver_masses_vary(s) ? RK_VARS : RK_MASS;
+    for (int v = 0; v < n_vars; v++) memcpy(s->y0[v], y[v], n * sizeof(double));
     double work = 0.0, work_st = 0.0, work_moves = 0.0;
     bool moves = s->pp.shifting || s->pp.volume_correction;
     for (int stage = 0; stage < 4; stage++) {
-        double ts = s->t + stage_c[stage] * dt, c = stage_c[stage] * dt;
+        double ts = s->t + stage_c[stage] * dt;
         tank_frame frame = solver_frame(s, ts);
-        if (stage > 0) { /* stage 0 is the state solver_prepare has set up */
-#pragma omp parallel for schedule(static)
-            for (size_t i = 0; i < n; i++)
-                for (int v = 0; v < RK_VARS; v++) y[v][i] = s->y0[v][i] + c * rate[v][i];
+        if (stage > 0) { /* stage 0 is the state solver_prepare has set up; the others' state
+                            was set by the previous stage's rk_accumulate */
             if (s->domain) s->domain->refresh_halo(s->domain, p, INTEGRATED_FIELDS);
             solver_update_eos(s);
             tank_refresh_ghosts(&s->tank, p, &frame, s->pp.rho0, s->pp.c0);
@@ -195,15 +230,9 @@ void solver_advance(solver *s, double t_stop)
         if (s->pp.surface_tension)
             work_st += stage_w[stage] * surface_tension_power(p, s->scratch, solver_reducer(s));
         if (moves) work_moves += stage_w[stage] * moves_power(s);
-        double w = stage_w[stage];
-#pragma omp parallel for schedule(static)
-        for (size_t i = 0; i < n; i++)
-            for (int v = 0; v < RK_VARS; v++)
-                s->sum[v][i] = (stage == 0 ? 0.0 : s->sum[v][i]) + w * rate[v][i];
+        rk_accumulate(s, y, rate, n_vars, stage, stage_w[stage],
+                      stage < 3 ? stage_c[stage + 1] * dt : dt);
     }
-#pragma omp parallel for schedule(static)
-    for (size_t i = 0; i < n; i++)
-        for (int v = 0; v < RK_VARS; v++) y[v][i] = s->y0[v][i] + dt * s->sum[v][i];
     s->work_in += dt * work;
     s->work_st += dt * work_st;
     s->work_moves += dt * work_moves;

@@ -50,24 +50,18 @@ static inline void rhs_particle_finish(const physics_params *pp, const particles
                                        const tank_frame *frame, const bool variable_mass,
                                        double eta, rhs_sums s, const rates *out)
 {
-    vec xi = vec_load(p->x, i), ui = vec_load(p->u, i), dui = vec_load(p->shift, i);
+    vec xi = vec_load(p->x, i), ui = vec_load(p->u, i);
     double drho = s.drho;
-    vec transport = vec_add(ui, dui);
-    if (pp->volume_correction) { /* the particle moves through the density field */
-        vec dvi = vec_load(p->correction, i);
-        transport = vec_add(transport, dvi);
-        drho += volume_correction_resampling(dvi, vec_load(p->grad_rho, i));
-    }
+    if (pp->volume_correction) /* the particle moves through the density field */
+        drho += volume_correction_resampling(vec_load(p->correction, i), vec_load(p->grad_rho, i));
     out->drho[i] = drho + p->diff_rho[i];
     vec acc = vec_axpy(frame_body_force(frame, xi, ui), 1.0 / p->rho[i], s.force);
     /* the surface-tension force on the particle at this stage: m a sums it exactly */
     if (pp->surface_tension) acc = vec_axpy(acc, 1.0 / p->m[i], vec_load(p->st_force, i));
-    for (int d = 0; d < DIM; d++) {
-        out->du[d][i] = acc.c[d];
-        out->dx[d][i] = transport.c[d];
-    }
-    /* Eq. (3): dm/dt = eta [div(rho du) V_i + D^m] (fluid pairs only: the total is exact) */
-    out->dm[i] = variable_mass ? eta * (s.mass_flux + p->diff_m[i]) : 0.0;
+    for (int d = 0; d < DIM; d++) out->du[d][i] = acc.c[d];
+    /* Eq. (3): dm/dt = eta [div(rho du) V_i + D^m] (fluid pairs only: the total is exact);
+       with constant masses there is no dm to write (solver.h) */
+    if (variable_mass) out->dm[i] = eta * (s.mass_flux + p->diff_m[i]);
 }
 
 /* Runs VARIANT(les, ale, variable_mass) with the three as compile-time constants, so that the

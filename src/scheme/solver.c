@@ -50,26 +50,38 @@ static int grow(void **a, size_t n, size_t size)
     return 0;
 }
 
+_Static_assert(PARTICLE_N_RATED == DIM + 2, "solver_reserve grows the rates du, drho and dm");
+
+/* The RK4 arrays of the masses, at the work arrays' capacity. */
+static int grow_mass_arrays(solver *s, size_t n)
+{
+    if (grow((void **)&s->y0[RK_MASS], n, sizeof(double)) ||
+        grow((void **)&s->sum[RK_MASS], n, sizeof(double)) ||
+        grow((void **)&s->k.dm, n, sizeof(double)))
+        return -1;
+    return 0;
+}
+
 int solver_reserve(solver *s, size_t n_fluid)
 {
     size_t n = n_fluid ? n_fluid : 1;
     if (n <= s->work_capacity) return 0;
-    for (int v = 0; v < RK_VARS; v++)
+    for (int v = 0; v < RK_MASS; v++)
         if (grow((void **)&s->y0[v], n, sizeof(double)) ||
             grow((void **)&s->sum[v], n, sizeof(double)))
             return -1;
-#define GROW_RATE_SCALAR(name)                                                                     \
-    if (grow((void **)&s->k.d##name, n, sizeof(double))) return -1;
-#define GROW_RATE_VECTOR(name)                                                                     \
-    for (int d = 0; d < DIM; d++)                                                                  \
-        if (grow((void **)&s->k.d##name[d], n, sizeof(double))) return -1;
-    PARTICLE_INTEGRATED(GROW_RATE_SCALAR, GROW_RATE_VECTOR)
+    for (int d = 0; d < DIM; d++)
+        if (grow((void **)&s->k.du[d], n, sizeof(double))) return -1;
+    if (grow((void **)&s->k.drho, n, sizeof(double))) return -1;
+    if (s->k.dm && grow_mass_arrays(s, n)) return -1;
     if (grow((void **)&s->scratch, n, sizeof(double)) ||
         grow((void **)&s->order, n, sizeof(uint32_t)))
         return -1;
     s->work_capacity = n;
     return 0;
 }
+
+int solver_reserve_masses(solver *s) { return s->k.dm ? 0 : grow_mass_arrays(s, s->work_capacity); }
 
 int solver_init(solver *s, const config *cfg, char *err, size_t err_len)
 {
@@ -113,7 +125,7 @@ void solver_free(solver *s)
 #define FREE_RATE_SCALAR(name) free(s->k.d##name);
 #define FREE_RATE_VECTOR(name)                                                                     \
     for (int d = 0; d < DIM; d++) free(s->k.d##name[d]);
-    PARTICLE_INTEGRATED(FREE_RATE_SCALAR, FREE_RATE_VECTOR)
+    PARTICLE_RATED(FREE_RATE_SCALAR, FREE_RATE_VECTOR)
     free(s->scratch);
     free(s->order);
     surface_tension_free(&s->st_work);

@@ -19,6 +19,8 @@
 
 /* integrated fluid variables (PARTICLE_INTEGRATED): x[DIM], u[DIM], rho, m */
 #define RK_VARS PARTICLE_N_INTEGRATED
+/* the mass, the last of them: a step with constant masses integrates the others only */
+#define RK_MASS (RK_VARS - 1)
 
 /* What the step asks of a run split among processes (the MPI build's parallel/mpi_domain.h,
  * docs/mpi.md); a solver without one (domain NULL) is the whole liquid on one process, where
@@ -56,7 +58,8 @@ typedef struct solver {
     cell_grid grid;
     neighbour_list nl;
 
-    /* RK4 work arrays over the fluid */
+    /* RK4 work arrays over the fluid; the masses' (y0[RK_MASS], sum[RK_MASS], k.dm) only from
+       the first step with variable masses on (solver_masses_vary), NULL before */
     double *y0[RK_VARS];  /* state at the start of the step */
     double *sum[RK_VARS]; /* weighted sum of the stage rates */
     rates k;              /* rates of the current stage */
@@ -85,6 +88,13 @@ typedef struct solver {
     const solver_domain *domain;    /* the processes' split (MPI), or NULL: one process */
 } solver;
 
+/* Whether the masses vary in this step: Eq. (3)'s mass equation weighed by eta > 0, which
+ * comes with shifting only (Table 1; RHS_FOR_VARIANT in scheme/rhs_particle.h decides the same). */
+static inline bool solver_masses_vary(const solver *s)
+{
+    return s->pp.shifting && s->eta_control.eta > 0.0;
+}
+
 /* The global reductions of the run: over every process with a domain, NULL without. */
 static inline const reducer *solver_reducer(const solver *s)
 {
@@ -107,6 +117,7 @@ static inline double solver_max(const solver *s, const double *a, size_t n)
 #define solver_init_part      DIM_NAME(solver_init_part)
 #define solver_strips_at_most DIM_NAME(solver_strips_at_most)
 #define solver_reserve        DIM_NAME(solver_reserve)
+#define solver_reserve_masses DIM_NAME(solver_reserve_masses)
 #define solver_free           DIM_NAME(solver_free)
 #define solver_step           DIM_NAME(solver_step)
 #define solver_prepare        DIM_NAME(solver_prepare)
@@ -131,6 +142,9 @@ size_t solver_strips_at_most(const solver *s);
 /* Room in the work arrays for n_fluid fluid particles (an MPI process's share changes from
  * step to step). Returns 0, or -1 when out of memory. */
 int solver_reserve(solver *s, size_t n_fluid);
+/* Allocates the masses' RK4 arrays (a step with variable masses) if it has not yet. Returns
+ * 0, or -1 when out of memory. */
+int solver_reserve_masses(solver *s);
 /* Sets up the step from the current state: its size min(Eq. (8), t_stop - t), the fluid
  * sorted by cell, ghosts, neighbour lists, the per-step fields (geometry, free surface,
  * shifting, diffusion, surface tension), which also serve the diagnostics of the state at
