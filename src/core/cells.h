@@ -75,11 +75,11 @@ void cells_sort_order(const cell_grid *g, size_t n, uint32_t *order);
 /* The row length neighbours_build gives rows whose longest has `longest` entries: a
  * sixteenth more, so that the rows a step later, whose particles have moved by less than the
  * skin, rarely overflow (on issue 22's 2D case and INM2 3D at N = 20, only the first build
- * did), rounded up to whole blocks of eight entries (the SIMD scan's). */
+ * did). Not rounded to the SIMD scan's blocks of eight: the scan stores a whole block only
+ * where the row has room for it, and appends the last few entries one by one. */
 static inline size_t neighbours_row_room(int32_t longest)
 {
-    size_t room = (size_t)longest + (size_t)longest / 16;
-    return (room + 7) / 8 * 8;
+    return (size_t)longest + (size_t)longest / 16;
 }
 /* Lists, for each of the first n_rows particles, its neighbours within `radius` among all the
  * binned particles. Returns 0, or -1 when out of memory. */
