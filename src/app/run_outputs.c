@@ -66,7 +66,7 @@ void run_gather(const run *r, const particles *p, run_gather_kind which, particl
         for (int d = 0; d < DIM; d++)                                                              \
             whole->name[d] = t->gather(t, p->name[d], p->n_fluid, sizeof *p->name[d], &n);
     PARTICLE_FIELDS(GATHER_SCALAR, GATHER_VECTOR)
-    whole->n_fluid = whole->n_total = whole->capacity = n;
+    whole->n_fluid = whole->n_total = whole->capacity = whole->sources_capacity = n;
 }
 
 void run_gathered_free(const run *r, particles *whole)

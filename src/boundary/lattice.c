@@ -5,7 +5,9 @@
 int lattice_fill(particles *p, const config *cfg, const derived *dv, size_t first, size_t end)
 {
     size_t n = (size_t)dv->n_fluid, kept = 0;
-    if (first > end || end > n || particles_reserve(p, particles_initial_room(end - first)))
+    /* room for the fluid, and the images' head-room in the fields they hold */
+    if (first > end || end > n || particles_reserve(p, end - first) ||
+        particles_reserve_images(p, particles_initial_room(end - first)))
         return -1;
     double cell_volume = dv->cell_volume;
     /* the hydrostatic pressure below the top of the liquid box, whatever its shape (with

@@ -93,7 +93,7 @@ int tank_make_ghosts(const tank *t, particles *p, double reach)
                 /* the neighbour lists index fluid and ghosts with int32 (derived.c bounds the
                    fluid alone) */
                 if (g == (size_t)INT32_MAX) return -1;
-                if (g + 1 > p->capacity && particles_reserve(p, g + 1)) return -1;
+                if (g + 1 > p->capacity && particles_reserve_images(p, g + 1)) return -1;
                 p->ghost_kind[g - n_fluid] = GHOST_WALL_IMAGE;
                 p->ghost_source[g - n_fluid] = (int32_t)i;
                 p->ghost_map[g - n_fluid] = (uint8_t)walls;

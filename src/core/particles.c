@@ -1,6 +1,7 @@
 /* particles: allocation and reordering of the SoA store. */
 #include "core/particles.h"
 
+#include <stdbool.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -14,19 +15,44 @@ static int grow(void **ptr, size_t old, size_t count, size_t size)
     return 0;
 }
 
-int particles_reserve(particles *p, size_t capacity)
+/* Grows the fields whose FIELD_SOURCES_ONLY flag is `sources_only` from `old` to `capacity`
+ * slots. */
+static int grow_fields(particles *p, bool sources_only, size_t old, size_t capacity)
 {
-    if (capacity <= p->capacity) return 0;
-    size_t old = p->capacity;
-    if (capacity < particles_grown(old)) capacity = particles_grown(old);
 #define GROW_SCALAR(type, name, flags, snapshot, comment)                                          \
-    if (grow((void **)&p->name, old, capacity, sizeof(type))) return -1;
+    if (!((flags)&FIELD_SOURCES_ONLY) == !sources_only &&                                          \
+        grow((void **)&p->name, old, capacity, sizeof(type)))                                      \
+        return -1;
 #define GROW_VECTOR(type, name, flags, snapshot, comment)                                          \
-    for (int d = 0; d < DIM; d++)                                                                  \
+    for (int d = 0; d < DIM && !((flags)&FIELD_SOURCES_ONLY) == !sources_only; d++)                \
         if (grow((void **)&p->name[d], old, capacity, sizeof(type))) return -1;
     PARTICLE_FIELDS(GROW_SCALAR, GROW_VECTOR)
+    return 0;
+}
+
+/* At least `capacity`, and at least particles_grown of `old` when it grows. */
+static size_t grown_to(size_t old, size_t capacity)
+{
+    return capacity < particles_grown(old) ? particles_grown(old) : capacity;
+}
+
+int particles_reserve_images(particles *p, size_t capacity)
+{
+    if (capacity <= p->capacity) return 0;
+    capacity = grown_to(p->capacity, capacity);
+    if (grow_fields(p, false, p->capacity, capacity)) return -1;
     p->capacity = capacity;
     return 0;
+}
+
+int particles_reserve(particles *p, size_t capacity)
+{
+    if (capacity > p->sources_capacity) {
+        size_t sources = grown_to(p->sources_capacity, capacity);
+        if (grow_fields(p, true, p->sources_capacity, sources)) return -1;
+        p->sources_capacity = sources;
+    }
+    return particles_reserve_images(p, p->sources_capacity);
 }
 
 int particles_init(particles *p, size_t capacity)
@@ -49,6 +75,15 @@ size_t particles_bytes_per_slot(void)
 #define BYTES_SCALAR(type, name, flags, snapshot, comment) +sizeof(type)
 #define BYTES_VECTOR(type, name, flags, snapshot, comment) +DIM * sizeof(type)
     return 0 PARTICLE_FIELDS(BYTES_SCALAR, BYTES_VECTOR);
+}
+
+size_t particles_bytes_sources_only(void)
+{
+#define SOURCES_BYTES_SCALAR(type, name, flags, snapshot, comment)                                 \
+    +((flags)&FIELD_SOURCES_ONLY ? sizeof(type) : 0)
+#define SOURCES_BYTES_VECTOR(type, name, flags, snapshot, comment)                                 \
+    +((flags)&FIELD_SOURCES_ONLY ? DIM * sizeof(type) : 0)
+    return 0 PARTICLE_FIELDS(SOURCES_BYTES_SCALAR, SOURCES_BYTES_VECTOR);
 }
 
 /* The state is reordered through a scratch array of doubles. */

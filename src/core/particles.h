@@ -15,10 +15,19 @@
  * the fluid is sorted by cell (particles_permute_fluid); every other field is recomputed from it
  * every step or stage. FIELD_GHOST_COPY and FIELD_GHOST_MIRROR mark the per-step fields that a
  * wall ghost takes from its source once they are computed (tank_mirror_step_fields): as they
- * are (scalars), or mirrored across the ghost's walls (vectors). New slots start as zeros (shifting
- * and lambda are read before anything writes them). Adding a field is one line here: allocation,
- * growth, the bytes of a slot and the reordering follow from the table. */
-enum { FIELD_STATE = 1, FIELD_GHOST_COPY = 2, FIELD_GHOST_MIRROR = 4, FIELD_SURFACE_TENSION = 8 };
+ * are (scalars), or mirrored across the ghost's walls (vectors). FIELD_SOURCES_ONLY marks the
+ * fields that no wall image holds, read and written for the fluid and an MPI run's halo only:
+ * they have room for `sources_capacity` slots, not the whole store's (the walls' images of a
+ * narrow 3D tank are 40-45 % of its fluid). New slots start as zeros (shifting and lambda are
+ * read before anything writes them). Adding a field is one line here: allocation, growth, the
+ * bytes of a slot and the reordering follow from the table. */
+enum {
+    FIELD_STATE = 1,
+    FIELD_GHOST_COPY = 2,
+    FIELD_GHOST_MIRROR = 4,
+    FIELD_SURFACE_TENSION = 8,
+    FIELD_SOURCES_ONLY = 16 /* held by the fluid and an MPI run's halo, never by a wall image */
+};
 
 #define PARTICLE_FIELDS(SCALAR, VECTOR)                                                            \
     /* state of every particle (ghosts: mirrored from their source each RK stage) */               \
@@ -39,34 +48,38 @@ enum { FIELD_STATE = 1, FIELD_GHOST_COPY = 2, FIELD_GHOST_MIRROR = 4, FIELD_SURF
            "Smagorinsky eddy viscosity with van Driest damping, m^2/s")                            \
     SCALAR(double, nu_delta, FIELD_GHOST_COPY, NULL,                                               \
            "diffusion coefficient nu^delta of Eq. (5), m^2/s")                                     \
-    SCALAR(double, lambda, 0, "lambda", "smallest eigenvalue of L, Eq. (10) (fluid)")              \
-    VECTOR(double, normal, 0, NULL,                                                                \
+    SCALAR(double, lambda, FIELD_SOURCES_ONLY, "lambda",                                           \
+           "smallest eigenvalue of L, Eq. (10) (fluid)")                                           \
+    VECTOR(double, normal, FIELD_SOURCES_ONLY, NULL,                                               \
            "unit normal -L^-1 sum grad W V, out of the fluid (theory §4); in S_F below the free " \
            "surface, the nearest free-surface neighbour's (equidistant ones averaged)")            \
-    SCALAR(double, normal_raw, 0, NULL, "|L^-1 sum grad W V| before normalising")                  \
-    SCALAR(double, kernel_sum, 0, NULL,                                                            \
+    SCALAR(double, normal_raw, FIELD_SOURCES_ONLY, NULL, "|L^-1 sum grad W V| before normalising") \
+    SCALAR(double, kernel_sum, FIELD_SOURCES_ONLY, NULL,                                           \
            "sum_j W_ij, self included: 1 / geometric volume, Eq. (11)")                            \
-    SCALAR(double, gamma, 0, NULL, "Gamma_i = sum_j W_ij V_j, self included, Eq. (A.2)")           \
+    SCALAR(double, gamma, FIELD_SOURCES_ONLY, NULL,                                                \
+           "Gamma_i = sum_j W_ij V_j, self included, Eq. (A.2)")                                   \
     SCALAR(double, volume_mismatch, 0, NULL,                                                       \
            "e_i = V_i sum_j W_ij / kappa - 1: SPH over geometric volume, with the geometric "      \
            "correction only (volume_correction.h)")                                                \
     SCALAR(uint8_t, surface, FIELD_GHOST_COPY, "surface",                                          \
            "0 interior, 1 in S_F, 2 free surface (Marrone et al. 2010)")                           \
-    SCALAR(uint8_t, is_free, 0, NULL,                                                              \
+    SCALAR(uint8_t, is_free, FIELD_SOURCES_ONLY, NULL,                                             \
            "the free-surface test alone, read while `surface` is written")                         \
-    SCALAR(double, eps_vi, 0, "eps_vi",                                                            \
+    SCALAR(double, eps_vi, FIELD_SOURCES_ONLY, "eps_vi",                                           \
            "the local volume error eps_Vi^(1) of Eq. (12), computed for the snapshots")            \
-    SCALAR(double, diff_m, 0, NULL, "mass diffusion D^m of Eq. (5) (fluid)")                       \
+    SCALAR(double, diff_m, FIELD_SOURCES_ONLY, NULL, "mass diffusion D^m of Eq. (5) (fluid)")      \
     VECTOR(double, shift, FIELD_GHOST_MIRROR, "shifting", "shifting velocity delta-u, Eq. (7)")    \
     VECTOR(double, correction, FIELD_GHOST_MIRROR, NULL,                                           \
            "the geometric volume correction's velocity (zero without it; ghosts: mirrored), "      \
            "scheme/volume_correction.h")                                                           \
-    SCALAR(double, diff_rho, 0, NULL, "density diffusion D^rho of Eq. (5) (fluid)")                \
+    SCALAR(double, diff_rho, FIELD_SOURCES_ONLY, NULL,                                             \
+           "density diffusion D^rho of Eq. (5) (fluid)")                                           \
     /* surface tension, with fluid.surface_tension > 0 only (scheme/surface_tension.h) */          \
     SCALAR(double, interface, 0, NULL,                                                             \
            "interface function delta_Sigma, 1/m (ghosts: their source's)")                         \
-    SCALAR(double, curvature, FIELD_SURFACE_TENSION, "curvature", "kappa, 1/m (fluid)")            \
-    VECTOR(double, st_force, 0, NULL,                                                              \
+    SCALAR(double, curvature, FIELD_SURFACE_TENSION | FIELD_SOURCES_ONLY, "curvature",             \
+           "kappa, 1/m (fluid)")                                                                   \
+    VECTOR(double, st_force, FIELD_SOURCES_ONLY, NULL,                                             \
            "F^st V_i, the surface-tension force on the particle at the current RK stage, N")       \
     /* ghosts only, indexed g - n_fluid */                                                         \
     SCALAR(uint8_t, ghost_kind, 0, NULL, "what the ghost is (ghost_kind): a wall's image")         \
@@ -112,6 +125,7 @@ _Static_assert(FIELD_BITS <= 64, "the field masks are 64 bits");
  * process), then the walls' images of the fluid and halo particles. */
 typedef struct {
     size_t n_fluid, n_halo, n_total, capacity;
+    size_t sources_capacity; /* the slots of the FIELD_SOURCES_ONLY fields, at most capacity */
     PARTICLE_FIELDS(PARTICLE_SCALAR_MEMBER, PARTICLE_VECTOR_MEMBER)
     const ghost_map *ghost_maps; /* the table of the provider that made the ghosts */
 } particles;
@@ -159,11 +173,13 @@ static inline int particle_is_wall_image(const particles *p, size_t j)
     return j >= p->n_fluid && p->ghost_kind[j - p->n_fluid] == GHOST_WALL_IMAGE;
 }
 
-#define particles_init           DIM_NAME(particles_init)
-#define particles_free           DIM_NAME(particles_free)
-#define particles_reserve        DIM_NAME(particles_reserve)
-#define particles_permute_fluid  DIM_NAME(particles_permute_fluid)
-#define particles_bytes_per_slot DIM_NAME(particles_bytes_per_slot)
+#define particles_init               DIM_NAME(particles_init)
+#define particles_free               DIM_NAME(particles_free)
+#define particles_reserve            DIM_NAME(particles_reserve)
+#define particles_reserve_images     DIM_NAME(particles_reserve_images)
+#define particles_bytes_sources_only DIM_NAME(particles_bytes_sources_only)
+#define particles_permute_fluid      DIM_NAME(particles_permute_fluid)
+#define particles_bytes_per_slot     DIM_NAME(particles_bytes_per_slot)
 
 /* Allocates room for `capacity` particles (fluid + ghosts); all counts 0. Returns 0 or -1. */
 int particles_init(particles *p, size_t capacity);
@@ -177,11 +193,16 @@ void particles_free(particles *p);
  * used). estimate.c follows the same two rules. */
 static inline size_t particles_initial_room(size_t n) { return n + n / 16 + 64; }
 static inline size_t particles_grown(size_t capacity) { return capacity + capacity / 16; }
-/* Grows the store to hold at least `capacity` particles, and at least particles_grown of what
- * it held, keeping the contents. */
+/* Grows the store to hold at least `capacity` particles, fluid, halo or wall images, and at
+ * least particles_grown of what it held, keeping the contents. */
 int particles_reserve(particles *p, size_t capacity);
-/* The bytes one particle slot takes in the store (every array of it). */
+/* particles_reserve for slots that only wall images will take (from particles_images_begin
+ * on): the FIELD_SOURCES_ONLY fields keep their room. */
+int particles_reserve_images(particles *p, size_t capacity);
+/* The bytes one particle slot takes in the store (every array of it), and of those the
+ * FIELD_SOURCES_ONLY fields'. */
 size_t particles_bytes_per_slot(void);
+size_t particles_bytes_sources_only(void);
 /* Reorders the persistent fluid state (the fields marked FIELD_STATE: id, x, u, rho, m) so
  * that new slot k holds old particle order[k]; scratch needs n_fluid doubles. */
 void particles_permute_fluid(particles *p, const uint32_t *order, double *scratch);

@@ -56,7 +56,9 @@ void DIM_NAME(estimate_run)(const config *cfg, const derived *dv, int threads, r
     /* the store: lattice_fill's room, grown as particles_reserve grows it for the ghosts */
     size_t capacity = particles_initial_room((size_t)n);
     while ((double)capacity < total) capacity = particles_grown(capacity);
-    double store = (double)particles_bytes_per_slot() * capacity;
+    double sources_only = (double)particles_bytes_sources_only();
+    double store =
+        ((double)particles_bytes_per_slot() - sources_only) * capacity + sources_only * n;
     /* solver_reserve: y0 and sum (RK_VARS each) and the stored rates (PARTICLE_N_RATED),
        the masses' three only where they may vary (eta = 1 or the switch), scratch, the order */
     double rk = 2.0 * RK_VARS + PARTICLE_N_RATED - (models_params(cfg->scheme).eta ? 0.0 : 3.0);
