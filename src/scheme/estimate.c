@@ -53,7 +53,8 @@ void DIM_NAME(estimate_run)(const config *cfg, const derived *dv, int threads, r
     double ghosts = box > 0.0 ? (padded - box) * n / box : 0.0;
     double total = n + ghosts;
 
-    /* the store: lattice_fill's room, grown as particles_reserve grows it for the ghosts */
+    /* the store: lattice_fill's room, grown as particles_reserve_images grows it for the
+       ghosts; the fields no image holds (FIELD_SOURCES_ONLY) for the fluid alone */
     size_t capacity = particles_initial_room((size_t)n);
     while ((double)capacity < total) capacity = particles_grown(capacity);
     double sources_only = (double)particles_bytes_sources_only();
