@@ -19,12 +19,11 @@ static int grow(void **ptr, size_t old, size_t count, size_t size)
  * slots. */
 static int grow_fields(particles *p, bool sources_only, size_t old, size_t capacity)
 {
+#define SELECTED(flags) ((((flags)&FIELD_SOURCES_ONLY) != 0) == sources_only)
 #define GROW_SCALAR(type, name, flags, snapshot, comment)                                          \
-    if (!((flags)&FIELD_SOURCES_ONLY) == !sources_only &&                                          \
-        grow((void **)&p->name, old, capacity, sizeof(type)))                                      \
-        return -1;
+    if (SELECTED(flags) && grow((void **)&p->name, old, capacity, sizeof(type))) return -1;
 #define GROW_VECTOR(type, name, flags, snapshot, comment)                                          \
-    for (int d = 0; d < DIM && !((flags)&FIELD_SOURCES_ONLY) == !sources_only; d++)                \
+    for (int d = 0; d < DIM && SELECTED(flags); d++)                                               \
         if (grow((void **)&p->name[d], old, capacity, sizeof(type))) return -1;
     PARTICLE_FIELDS(GROW_SCALAR, GROW_VECTOR)
     return 0;
@@ -70,21 +69,20 @@ void particles_free(particles *p)
     memset(p, 0, sizeof *p);
 }
 
-size_t particles_bytes_per_slot(void)
+/* The bytes of one slot of the fields whose flags include all of `flags` (0: every field). */
+static size_t slot_bytes(unsigned flags)
 {
-#define BYTES_SCALAR(type, name, flags, snapshot, comment) +sizeof(type)
-#define BYTES_VECTOR(type, name, flags, snapshot, comment) +DIM * sizeof(type)
+#define HAS(field_flags) (((unsigned)(field_flags)&flags) == flags)
+#define BYTES_SCALAR(type, name, field_flags, snapshot, comment)                                   \
+    +(HAS(field_flags) ? sizeof(type) : 0)
+#define BYTES_VECTOR(type, name, field_flags, snapshot, comment)                                   \
+    +(HAS(field_flags) ? DIM * sizeof(type) : 0)
     return 0 PARTICLE_FIELDS(BYTES_SCALAR, BYTES_VECTOR);
 }
 
-size_t particles_bytes_sources_only(void)
-{
-#define SOURCES_BYTES_SCALAR(type, name, flags, snapshot, comment)                                 \
-    +((flags)&FIELD_SOURCES_ONLY ? sizeof(type) : 0)
-#define SOURCES_BYTES_VECTOR(type, name, flags, snapshot, comment)                                 \
-    +((flags)&FIELD_SOURCES_ONLY ? DIM * sizeof(type) : 0)
-    return 0 PARTICLE_FIELDS(SOURCES_BYTES_SCALAR, SOURCES_BYTES_VECTOR);
-}
+size_t particles_bytes_per_slot(void) { return slot_bytes(0); }
+
+size_t particles_bytes_sources_only(void) { return slot_bytes(FIELD_SOURCES_ONLY); }
 
 /* The state is reordered through a scratch array of doubles. */
 #define FITS_SCALAR(type, name, flags, snapshot, comment)                                          \

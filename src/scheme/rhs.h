@@ -18,6 +18,13 @@ typedef struct {
     PARTICLE_RATED(RATE_SCALAR, RATE_VECTOR)
 } rates;
 
+/* Whether the masses vary at this eta: Eq. (3)'s mass equation weighed by eta > 0, which comes
+ * with shifting only (Table 1: eta = 1 implies xi = 1). */
+static inline bool rhs_masses_vary(const physics_params *pp, double eta)
+{
+    return pp->shifting && eta > 0.0;
+}
+
 /* dr/dt of fluid particle i: u + du, and the geometric correction's dv with the correction on
  * (the particle moves through the density field, Eq. (3) with the shifting of Eq. (7)); of the
  * state in the store, with the step's frozen du and dv. */

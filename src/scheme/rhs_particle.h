@@ -66,9 +66,9 @@ static inline void rhs_particle_finish(const physics_params *pp, const particles
 
 /* Runs VARIANT(les, ale, variable_mass) with the three as compile-time constants, so that the
  * loops are specialised once per variant, never tested per pair (docs/architecture.md).
- * Variable masses come only with shifting (Table 1: eta = 1 implies xi = 1). */
+ * The masses vary only with shifting (rhs_masses_vary). */
 #define RHS_FOR_VARIANT(pp, eta, VARIANT)                                                          \
-    switch (((pp)->les ? 4 : 0) + ((pp)->shifting ? 2 : 0) + ((pp)->shifting && (eta) > 0.0)) {    \
+    switch (((pp)->les ? 4 : 0) + ((pp)->shifting ? 2 : 0) + rhs_masses_vary(pp, eta)) {           \
     case 0: VARIANT(false, false, false); break;                                                   \
     case 2: VARIANT(false, true, false); break;                                                    \
     case 3: VARIANT(false, true, true); break;                                                     \

@@ -88,11 +88,10 @@ typedef struct solver {
     const solver_domain *domain;    /* the processes' split (MPI), or NULL: one process */
 } solver;
 
-/* Whether the masses vary in this step: Eq. (3)'s mass equation weighed by eta > 0, which
- * comes with shifting only (Table 1; RHS_FOR_VARIANT in scheme/rhs_particle.h decides the same). */
+/* Whether the masses vary in this step (rhs_masses_vary at the step's eta). */
 static inline bool solver_masses_vary(const solver *s)
 {
-    return s->pp.shifting && s->eta_control.eta > 0.0;
+    return rhs_masses_vary(&s->pp, s->eta_control.eta);
 }
 
 /* The global reductions of the run: over every process with a domain, NULL without. */
