@@ -29,7 +29,8 @@ static double support_pairs(const solver *s)
     double pairs = 0.0;
     const particles *p = &s->p;
     for (size_t i = 0; i < p->n_fluid; i++) {
-        const int32_t *row = s->nl.index + i * s->nl.row_capacity;
+        int32_t entries[s->nl.row_capacity];
+        const int32_t *row = neighbour_row(&s->nl, i, entries);
         for (int32_t k = 0; k < s->nl.count[i]; k++) {
             vec r = vec_sub(vec_load(p->x, (size_t)row[k]), vec_load(p->x, i));
             pairs += vec_norm2(r) < s->pp.k.support2;

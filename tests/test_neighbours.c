@@ -1,6 +1,6 @@
 /* Neighbour search (cell list + lists) against brute force, with particles near every wall,
- * edge and corner and their ghosts, in each form of the scan (core/cells_scan.h); and the
- * sort by cell. */
+ * edge and corner and their ghosts, in each form of the scan (core/cells_scan.h) and each form
+ * of the rows (16-bit windows or whole); and the sort by cell. */
 #include "boundary/tank.h"
 #include "core/cells.h"
 #include "core/lanes_switch.h"
@@ -18,6 +18,25 @@ static int compare_int32(const void *a, const void *b)
 {
     int32_t x = *(const int32_t *)a, y = *(const int32_t *)b;
     return (x > y) - (x < y);
+}
+
+/* The list's rows, unpacked (neighbour_row), cap entries apart in a new array. */
+static int32_t *rows_of(const neighbour_list *nl, size_t cap)
+{
+    int32_t *rows = malloc(nl->n_rows * cap * sizeof *rows);
+    int32_t entries[nl->row_capacity];
+    for (size_t i = 0; i < nl->n_rows; i++)
+        memcpy(rows + i * cap, neighbour_row(nl, i, entries), (size_t)nl->count[i] * sizeof *rows);
+    return rows;
+}
+
+static void assert_rows_equal(const neighbour_list *nl, const int32_t *rows, size_t cap)
+{
+    int32_t *now = rows_of(nl, cap);
+    for (size_t i = 0; i < nl->n_rows; i++)
+        for (int32_t k = 0; k < nl->count[i]; k++)
+            assert_int_equal(now[i * cap + (size_t)k], rows[i * cap + (size_t)k]);
+    free(now);
 }
 
 /* Random particles in a unit tank, a third of them pressed against walls and corners. */
@@ -65,19 +84,26 @@ static void check_against_brute_force(size_t n, double radius)
     nl.row_capacity = 4; /* force the overflow path */
     assert_int_equal(neighbours_build(&nl, &grid, p.x, p.n_fluid, radius), 0);
     size_t cap = nl.row_capacity;
-    int32_t *scalar_rows = malloc(p.n_fluid * cap * sizeof *scalar_rows);
-    memcpy(scalar_rows, nl.index, p.n_fluid * cap * sizeof *scalar_rows);
+    /* a few thousand particles: every row fits its 16-bit windows (cells.h) */
+    assert_false(nl.wide);
+    int32_t *scalar_rows = rows_of(&nl, cap);
     for (int width = 4; width <= 8; width += 4) {
         lanes_limit(width);
         neighbours_free(&nl);
         nl.row_capacity = 4; /* force the overflow path */
         assert_int_equal(neighbours_build(&nl, &grid, p.x, p.n_fluid, radius), 0);
         assert_int_equal(nl.row_capacity, cap);
-        for (size_t i = 0; i < p.n_fluid; i++)
-            for (int32_t k = 0; k < nl.count[i]; k++)
-                assert_int_equal(nl.index[i * cap + (size_t)k], scalar_rows[i * cap + (size_t)k]);
+        assert_rows_equal(&nl, scalar_rows, cap);
     }
     lanes_limit(8);
+    /* the rows kept whole, 32 bits an entry, are the same rows */
+    neighbours_free(&nl);
+    nl.wide = true;
+    assert_int_equal(neighbours_build(&nl, &grid, p.x, p.n_fluid, radius), 0);
+    assert_true(nl.wide);
+    assert_rows_equal(&nl, scalar_rows, cap);
+    neighbours_free(&nl);
+    assert_int_equal(neighbours_build(&nl, &grid, p.x, p.n_fluid, radius), 0);
 
     int32_t *expected = malloc(p.n_total * sizeof *expected);
     int32_t *found = malloc(p.n_total * sizeof *found);
@@ -90,7 +116,7 @@ static void check_against_brute_force(size_t n, double radius)
                 expected[m++] = (int32_t)j;
         }
         assert_int_equal(nl.count[i], m);
-        for (int32_t k = 0; k < m; k++) found[k] = nl.index[i * nl.row_capacity + (size_t)k];
+        memcpy(found, neighbour_row(&nl, i, found), (size_t)m * sizeof *found);
         qsort(found, (size_t)m, sizeof *found, compare_int32);
         for (int32_t k = 0; k < m; k++) assert_int_equal(found[k], expected[k]);
         pairs += (size_t)m;
@@ -105,10 +131,7 @@ static void check_against_brute_force(size_t n, double radius)
     assert_int_equal(nl.longest, longest);
     assert_int_equal(neighbours_build(&nl, &grid, p.x, p.n_fluid, radius), 0);
     assert_int_equal(nl.row_capacity, (size_t)longest + (size_t)longest / 16);
-    for (size_t i = 0; i < p.n_fluid; i++)
-        for (int32_t k = 0; k < nl.count[i]; k++)
-            assert_int_equal(nl.index[i * nl.row_capacity + (size_t)k],
-                             scalar_rows[i * cap + (size_t)k]);
+    assert_rows_equal(&nl, scalar_rows, cap);
     free(scalar_rows);
     free(expected);
     free(found);
@@ -122,6 +145,52 @@ static void test_brute_force(void **state)
     (void)state;
     check_against_brute_force(DIM == 2 ? 600 : 1500, 0.09);
     check_against_brute_force(DIM == 2 ? 300 : 400, 0.33); /* few cells per axis */
+}
+
+/* A row whose fluid neighbours lie further apart in index than a 16-bit window (cells.h): the
+ * build keeps every row whole, with the same neighbours in the same order, and so does the
+ * next build. Particles on a lattice wider than the radius, so that each has no neighbour,
+ * but for particle 0, next to which lie particle 1 and the last. */
+static void test_rows_beyond_window(void **state)
+{
+    (void)state;
+    size_t side = DIM == 2 ? 200 : 35, n = 1;
+    for (int d = 0; d < DIM; d++) n *= side;
+    assert_true(n > NEIGHBOUR_WINDOW + 2);
+    particles p;
+    assert_int_equal(particles_init(&p, n), 0);
+    double spacing = 1.0 / (double)side, radius = 0.4 * spacing;
+    for (size_t i = 0; i < n; i++)
+        for (int d = 0, rest = (int)i; d < DIM; d++, rest /= (int)side)
+            p.x[d][i] = (0.5 + (double)(rest % (int)side)) * spacing;
+    for (int d = 0; d < DIM; d++) {
+        p.x[d][1] = p.x[d][0] + (d == 0 ? 0.1 : 0.0) * spacing;
+        p.x[d][n - 1] = p.x[d][0] + (d == 1 ? 0.1 : 0.0) * spacing;
+    }
+    p.n_fluid = p.n_total = n;
+    cell_grid grid = {0};
+    double lo[DIM], hi[DIM];
+    for (int d = 0; d < DIM; d++) {
+        lo[d] = 0.0;
+        hi[d] = 1.0;
+    }
+    assert_int_equal(cells_setup(&grid, lo, hi, radius), 0);
+    assert_int_equal(cells_bin(&grid, p.x, n), 0);
+    neighbour_list nl = {0};
+    for (int build = 0; build < 2; build++) {
+        assert_int_equal(neighbours_build(&nl, &grid, p.x, n, radius), 0);
+        assert_true(nl.wide);
+        int32_t entries[nl.row_capacity];
+        const int32_t *row = neighbour_row(&nl, 0, entries);
+        assert_int_equal(nl.count[0], 2);
+        assert_int_equal(row[0], 1);
+        assert_int_equal(row[1], (int32_t)(n - 1));
+        assert_int_equal(nl.count[1], 2);
+        assert_int_equal(nl.count[2], 0);
+    }
+    cells_free(&grid);
+    neighbours_free(&nl);
+    particles_free(&p);
 }
 
 /* After the sort, particles of one cell are contiguous and cells come in ascending order. */
@@ -167,6 +236,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_brute_force),
+        cmocka_unit_test(test_rows_beyond_window),
         cmocka_unit_test(test_sort_by_cell),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

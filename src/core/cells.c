@@ -114,6 +114,8 @@ void cells_sort_order(const cell_grid *g, size_t n, uint32_t *order)
 void neighbours_free(neighbour_list *nl)
 {
     free(nl->count);
+    free(nl->packed);
+    free(nl->base);
     free(nl->index);
     memset(nl, 0, sizeof *nl);
 }
@@ -151,6 +153,63 @@ static int32_t scan_neighbours(const cell_grid *g, double *const x[DIM], size_t 
     return found;
 }
 
+/* Row `row` (count entries) in 16 bits (neighbour_list): packed[] and its two windows' bases;
+ * false when an entry lies beyond its window. The fluid's indices all lie below the ghosts',
+ * so the row's least and greatest entries bound the two windows from outside; the selections
+ * are masks, which GCC 12 vectorises (and each window's bounds variables of their own: its
+ * vectoriser got an array indexed by row[n] >= n_rows wrong at -O3). */
+static bool pack_row(const int32_t *row, int32_t count, int32_t n_rows, uint16_t *packed,
+                     int32_t base[2])
+{
+    int32_t lo = INT32_MAX, hi = -1, fluid_hi = -1, ghosts_lo = INT32_MAX;
+    for (int32_t n = 0; n < count; n++) {
+        int32_t j = row[n], ghost = -(int32_t)(j >= n_rows); /* all ones for a ghost */
+        int32_t as_fluid = j | ghost, as_ghost = j | (~ghost & INT32_MAX); /* else -1, MAX */
+        lo = j < lo ? j : lo;
+        hi = j > hi ? j : hi;
+        fluid_hi = as_fluid > fluid_hi ? as_fluid : fluid_hi;
+        ghosts_lo = as_ghost < ghosts_lo ? as_ghost : ghosts_lo;
+    }
+    int32_t fluid = fluid_hi >= 0 ? lo : 0, ghosts = ghosts_lo < INT32_MAX ? ghosts_lo : 0;
+    if (fluid_hi >= 0 && fluid_hi - fluid >= NEIGHBOUR_WINDOW) return false;
+    if (ghosts_lo < INT32_MAX && hi - ghosts >= NEIGHBOUR_WINDOW) return false;
+    for (int32_t n = 0; n < count; n++)
+        packed[n] =
+            (uint16_t)(row[n] >= n_rows ? NEIGHBOUR_WINDOW + (row[n] - ghosts) : row[n] - fluid);
+    base[0] = fluid;
+    base[1] = ghosts;
+    return true;
+}
+
+/* Room for n_rows rows of the list's length in its form (packed or wide); 0 or -1. The array is
+ * reallocated when too small, or when an eighth or more of it would lie unused. */
+static int reserve_rows(neighbour_list *nl, size_t n_rows)
+{
+    if (n_rows > nl->capacity_rows) {
+        int32_t *count = realloc(nl->count, n_rows * sizeof *count);
+        if (!count) return -1;
+        nl->count = count;
+        int32_t *base = realloc(nl->base, 2 * n_rows * sizeof *base);
+        if (!base) return -1;
+        nl->base = base;
+        nl->capacity_rows = n_rows;
+    }
+    size_t need = (n_rows ? n_rows : 1) * nl->row_capacity;
+    if (need <= nl->index_capacity && need > nl->index_capacity - nl->index_capacity / 8) return 0;
+    free(nl->packed);
+    free(nl->index);
+    nl->packed = NULL;
+    nl->index = NULL;
+    nl->index_capacity = 0;
+    if (nl->wide)
+        nl->index = malloc(need * sizeof *nl->index);
+    else
+        nl->packed = malloc(need * sizeof *nl->packed);
+    if (!nl->index && !nl->packed) return -1;
+    nl->index_capacity = need;
+    return 0;
+}
+
 int neighbours_build(neighbour_list *nl, const cell_grid *g, double *const x[DIM], size_t n_rows,
                      double radius)
 {
@@ -170,31 +229,31 @@ int neighbours_build(neighbour_list *nl, const cell_grid *g, double *const x[DIM
     else if (nl->row_capacity == 0)
         nl->row_capacity = DIM == 2 ? 64 : 128;
     for (;;) {
-        if (n_rows > nl->capacity_rows) {
-            int32_t *count = realloc(nl->count, n_rows * sizeof *count);
-            if (!count) return -1;
-            nl->count = count;
-            nl->capacity_rows = n_rows;
-        }
-        size_t need = (n_rows ? n_rows : 1) * nl->row_capacity;
-        /* reallocated when too small, or when an eighth or more of it would lie unused */
-        if (need > nl->index_capacity || need <= nl->index_capacity - nl->index_capacity / 8) {
-            free(nl->index);
-            nl->index_capacity = 0;
-            nl->index = malloc(need * sizeof *nl->index);
-            if (!nl->index) return -1;
-            nl->index_capacity = need;
-        }
+        if (reserve_rows(nl, n_rows)) return -1;
         int32_t cap = (int32_t)nl->row_capacity, most = 0;
-#pragma omp parallel for schedule(static) reduction(max : most)
-        for (size_t i = 0; i < n_rows; i++) {
-            int32_t k = scan_neighbours(g, x, i, r2max, nl->index + i * (size_t)cap, cap, scan);
-            nl->count[i] = k;
-            if (k > most) most = k;
+        bool misfit = false;
+#pragma omp parallel reduction(max : most) reduction(|| : misfit)
+        {
+            int32_t scanned[nl->wide ? 1 : cap]; /* a row before it is packed */
+#pragma omp for schedule(static)
+            for (size_t i = 0; i < n_rows; i++) {
+                size_t at = i * (size_t)cap;
+                int32_t *row = nl->wide ? nl->index + at : scanned;
+                int32_t k = scan_neighbours(g, x, i, r2max, row, cap, scan);
+                if (!nl->wide && k <= cap &&
+                    !pack_row(row, k, (int32_t)n_rows, nl->packed + at, nl->base + 2 * i))
+                    misfit = true;
+                nl->count[i] = k;
+                if (k > most) most = k;
+            }
         }
         nl->longest = most;
-        if (most <= cap) return 0;
+        if (!misfit && most <= cap) return 0;
+        if (misfit) { /* a row beyond its 16-bit windows: every row whole, from now on */
+            nl->wide = true;
+            nl->index_capacity = 0;
+        }
         /* a row overflowed (strong compression): redo with room to spare */
-        nl->row_capacity = neighbours_row_room(most);
+        if (most > cap) nl->row_capacity = neighbours_row_room(most);
     }
 }

@@ -4,6 +4,7 @@
 #define VCSPH_CELLS_H
 
 #include "core/dim.h"
+#include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
 
@@ -21,14 +22,39 @@ typedef struct {
 } cell_grid;
 
 /* Neighbour lists: row i holds the indices j != i within `radius` of i, in the fixed order of
- * the cell scan (so every sum over them is the same for any number of threads). */
+ * the cell scan (so every sum over them is the same for any number of threads). A row is kept
+ * in 16 bits an entry: j = base[2 i + w] + e, with e < NEIGHBOUR_WINDOW, in one of two windows
+ * w (the entry's top bit): the fluid (j < n_rows) and the ghosts after it (the walls' images
+ * and an MPI halo at the store's tail, far from the fluid in index but close to one another).
+ * With the fluid sorted by cell, a row's fluid lies within three rows of cells of one strip or
+ * two strips (cells_setup), a few thousand indices in the cases of docs/performance.md. A
+ * build where some row does not fit its windows keeps every row whole, 32 bits an entry
+ * (`wide`), and so do the builds after it. neighbour_row reads either. */
+#define NEIGHBOUR_WINDOW 32768
 typedef struct {
     size_t n_rows, row_capacity, capacity_rows, index_capacity;
     int32_t *count;
-    int32_t *index;  /* n_rows x row_capacity */
+    uint16_t *packed; /* n_rows x row_capacity entries; unless wide */
+    int32_t *base;    /* n_rows x 2: each row's windows' first indices; unless wide */
+    int32_t *index;   /* n_rows x row_capacity indices; when wide */
+    bool wide;
     int32_t longest; /* the longest row of the last build, which sizes the next one's rows */
     double radius;
 } neighbour_list;
+
+/* Particle i's row as indices: the stored row when the list is wide, else the row unpacked
+ * into `entries` (room for the row's count). */
+static inline const int32_t *neighbour_row(const neighbour_list *nl, size_t i, int32_t *entries)
+{
+    if (nl->wide) return nl->index + i * nl->row_capacity;
+    const uint16_t *e = nl->packed + i * nl->row_capacity;
+    /* read before the loop: a store to entries[] could change nl->count as far as the compiler
+       knows, which would keep it from unpacking several entries at once */
+    int32_t count = nl->count[i], fluid = nl->base[2 * i], ghosts = nl->base[2 * i + 1];
+    for (int32_t n = 0; n < count; n++)
+        entries[n] = (e[n] >= NEIGHBOUR_WINDOW ? ghosts - NEIGHBOUR_WINDOW : fluid) + e[n];
+    return entries;
+}
 
 /* Cells are numbered strip by strip: the box is cut along x into strips of CELL_STRIP_WIDTH
  * cells, and within a strip row by row (x fastest, then y, then z). The particles, sorted by

@@ -25,12 +25,14 @@ typedef struct {
     lane_vec xi;
 } lane_rows;
 
-LANE_INLINE lane_rows lane_rows_of(const neighbour_list *nl, double *const x[DIM], size_t i0)
+/* The rows, unpacked into `entries` (room for LANES rows of the list's length, neighbour_row) */
+LANE_INLINE lane_rows lane_rows_of(const neighbour_list *nl, double *const x[DIM], size_t i0,
+                                   int32_t *entries)
 {
     lane_rows rows;
     rows.most = 0;
     for (int l = 0; l < LANES; l++) {
-        rows.row[l] = neighbour_row(nl, i0 + (size_t)l);
+        rows.row[l] = neighbour_row(nl, i0 + (size_t)l, entries + (size_t)l * nl->row_capacity);
         rows.count[l] = nl->count[i0 + (size_t)l];
         if (rows.count[l] > rows.most) rows.most = rows.count[l];
     }
@@ -70,10 +72,12 @@ LANE_INLINE bool lane_pair_at(const kernel *k, double *const x[DIM], const lane_
  *     FOR_EACH_LANE_PAIR (k, p->x, nl, i0, pr) { ... pr.j, pr.within, pr.r_ji, pr.f ... }
  */
 #define FOR_EACH_LANE_PAIR(k, x, nl, i0, pr)                                                       \
-    for (lane_rows pr##_rows = lane_rows_of(nl, x, i0), *pr##_once = &pr##_rows; pr##_once;        \
-         pr##_once = NULL)                                                                         \
-        for (int32_t pr##_n = 0; pr##_n < pr##_rows.most; pr##_n++)                                \
-            if (!lane_pair_at(k, x, &pr##_rows, i0, pr##_n, &(pr))) {                              \
-            } else
+    for (int32_t pr##_entries[LANES * (nl)->row_capacity], *pr##_go = pr##_entries; pr##_go;       \
+         pr##_go = NULL)                                                                           \
+        for (lane_rows pr##_rows = lane_rows_of(nl, x, i0, pr##_entries), *pr##_once = &pr##_rows; \
+             pr##_once; pr##_once = NULL)                                                          \
+            for (int32_t pr##_n = 0; pr##_n < pr##_rows.most; pr##_n++)                            \
+                if (!lane_pair_at(k, x, &pr##_rows, i0, pr##_n, &(pr))) {                          \
+                } else
 
 #endif

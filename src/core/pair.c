@@ -63,26 +63,41 @@ geometry_blocks(const kernel *k, double *const x[DIM], const int32_t *row, int32
     }
 }
 
-__attribute__((target("arch=x86-64-v4"))) static void
-geometry_avx512(const kernel *k, double *const x[DIM], const int32_t *row, int32_t count, vec xi,
-                double *columns, size_t stride)
+/* Row i unpacked (neighbour_row) and its geometry, in the form the caller names: in SIMD
+ * blocks (`blocks`, inlined into a function built for AVX2 or AVX-512, which unpacks the row
+ * with the same vectors) or entry by entry. */
+__attribute__((always_inline)) static inline pair_row
+row_geometry(const kernel *k, double *const x[DIM], const neighbour_list *nl, size_t i, vec xi,
+             int32_t *entries, double *columns, size_t stride, const bool blocks)
 {
-    geometry_blocks(k, x, row, count, xi, columns, stride);
+    pair_row rw = {neighbour_row(nl, i, entries), nl->count[i], stride, columns, k->support2};
+    if (blocks)
+        geometry_blocks(k, x, rw.row, rw.count, xi, columns, stride);
+    else
+        geometry_scalar(k, x, rw.row, rw.count, xi, columns, stride);
+    return rw;
 }
 
-__attribute__((target("arch=x86-64-v3"))) static void
-geometry_avx2(const kernel *k, double *const x[DIM], const int32_t *row, int32_t count, vec xi,
-              double *columns, size_t stride)
+__attribute__((target("arch=x86-64-v4"))) static pair_row
+row_geometry_avx512(const kernel *k, double *const x[DIM], const neighbour_list *nl, size_t i,
+                    vec xi, int32_t *entries, double *columns, size_t stride)
 {
-    geometry_blocks(k, x, row, count, xi, columns, stride);
+    return row_geometry(k, x, nl, i, xi, entries, columns, stride, true);
 }
 
-void pairs_geometry(const kernel *k, double *const x[DIM], const int32_t *row, int32_t count,
-                    vec xi, double *columns, size_t stride)
+__attribute__((target("arch=x86-64-v3"))) static pair_row
+row_geometry_avx2(const kernel *k, double *const x[DIM], const neighbour_list *nl, size_t i, vec xi,
+                  int32_t *entries, double *columns, size_t stride)
+{
+    return row_geometry(k, x, nl, i, xi, entries, columns, stride, true);
+}
+
+pair_row pair_row_of(const kernel *k, double *const x[DIM], const neighbour_list *nl, size_t i,
+                     vec xi, int32_t *entries, double *columns, size_t stride)
 {
     switch (lanes_width()) {
-    case 8: geometry_avx512(k, x, row, count, xi, columns, stride); return;
-    case 4: geometry_avx2(k, x, row, count, xi, columns, stride); return;
-    default: geometry_scalar(k, x, row, count, xi, columns, stride); return;
+    case 8: return row_geometry_avx512(k, x, nl, i, xi, entries, columns, stride);
+    case 4: return row_geometry_avx2(k, x, nl, i, xi, entries, columns, stride);
+    default: return row_geometry(k, x, nl, i, xi, entries, columns, stride, false);
     }
 }

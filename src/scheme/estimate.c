@@ -64,11 +64,13 @@ void DIM_NAME(estimate_run)(const config *cfg, const derived *dv, int threads, r
        the masses' three only where they may vary (eta = 1 or the switch), scratch, the order */
     double rk = 2.0 * RK_VARS + PARTICLE_N_RATED - (models_params(cfg->scheme).eta ? 0.0 : 3.0);
     double work = ((rk + 1.0) * sizeof(double) + sizeof(uint32_t)) * n;
-    /* neighbours_build: a row of int32 per fluid particle, sized by the longest row; at rest
-       a particle has about the lattice points of the ball of radius reach */
+    /* neighbours_build: a row per fluid particle, sized by the longest row, of 16-bit entries,
+       a count and two bases (core/cells.h; a tank whose rows do not fit the 16-bit windows
+       takes 32 bits an entry and no bases); at rest a particle has about the lattice points
+       of the ball of radius reach */
     double ball = DIM == 2 ? M_PI * reach * reach : 4.0 / 3.0 * M_PI * reach * reach * reach;
     double row = (double)neighbours_row_room((int32_t)ceil(ball / cell_volume));
-    double lists = (row + 1.0) * sizeof(int32_t) * n;
+    double lists = (row * sizeof(uint16_t) + 3.0 * sizeof(int32_t)) * n;
     /* the cell grid: start per cell, item, cell_of and the position copy xs per particle */
     double grid =
         (cells + 1.0) * sizeof(size_t) + (2.0 * sizeof(uint32_t) + DIM * sizeof(double)) * total;
