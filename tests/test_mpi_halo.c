@@ -44,7 +44,7 @@ static void box_setup(box *b)
         hi[d] = length + b->cutoff;
     }
     memset(&b->g, 0, sizeof b->g);
-    assert_int_equal(cells_setup(&b->g, lo, hi, b->cutoff), 0);
+    assert_int_equal(cells_setup(&b->g, lo, hi, b->cutoff, 0.0), 0);
     b->n = (size_t)(COLUMNS * b->cutoff / b->dr) * ROWS * (DIM == 3 ? ROWS : 1);
 }
 

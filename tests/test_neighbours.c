@@ -76,7 +76,7 @@ static void check_against_brute_force(size_t n, double radius)
         lo[d] = -radius;
         hi[d] = 1.0 + radius;
     }
-    assert_int_equal(cells_setup(&grid, lo, hi, radius), 0);
+    assert_int_equal(cells_setup(&grid, lo, hi, radius, 0.0), 0);
     assert_true(grid.size >= radius);
     assert_int_equal(cells_bin(&grid, p.x, p.n_total), 0);
     /* the scalar form's rows, in their order, for the lane forms to match */
@@ -174,7 +174,7 @@ static void test_rows_beyond_window(void **state)
         lo[d] = 0.0;
         hi[d] = 1.0;
     }
-    assert_int_equal(cells_setup(&grid, lo, hi, radius), 0);
+    assert_int_equal(cells_setup(&grid, lo, hi, radius, 0.0), 0);
     assert_int_equal(cells_bin(&grid, p.x, n), 0);
     neighbour_list nl = {0};
     for (int build = 0; build < 2; build++) {
@@ -212,7 +212,7 @@ static void test_sort_by_cell(void **state)
         lo[d] = 0.0;
         hi[d] = 1.0;
     }
-    cells_setup(&grid, lo, hi, 0.1);
+    cells_setup(&grid, lo, hi, 0.1, 0.0);
     cells_bin(&grid, p.x, n);
     uint32_t *order = malloc(n * sizeof *order);
     double *scratch = malloc(n * sizeof *scratch);

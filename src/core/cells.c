@@ -6,7 +6,18 @@
 #include <stdlib.h>
 #include <string.h>
 
-int cells_setup(cell_grid *g, const double lo[DIM], const double hi[DIM], double cell_size)
+/* The widest strip (in cells along x) that holds at most CELL_STRIP_PARTICLES at the lattice's
+ * density, at least one cell. */
+static int strip_width_bound(const cell_grid *g, double spacing)
+{
+    double column = 1.0; /* particles in one column of cells, full of liquid */
+    for (int d = 0; d < DIM; d++) column *= g->size / spacing * (d > 0 ? g->n[d] : 1);
+    double width = floor(CELL_STRIP_PARTICLES / column);
+    return width < 1.0 ? 1 : width > CELL_STRIP_WIDTH ? CELL_STRIP_WIDTH : (int)width;
+}
+
+int cells_setup(cell_grid *g, const double lo[DIM], const double hi[DIM], double cell_size,
+                double spacing)
 {
     size_t n_cells = 1;
     for (int d = 0; d < DIM; d++) {
@@ -24,6 +35,8 @@ int cells_setup(cell_grid *g, const double lo[DIM], const double hi[DIM], double
     g->size = size;
     g->strip = g->n[0] / CELL_MIN_STRIPS;
     if (g->strip > CELL_STRIP_WIDTH) g->strip = CELL_STRIP_WIDTH;
+    if (spacing > 0.0 && g->strip > strip_width_bound(g, spacing))
+        g->strip = strip_width_bound(g, spacing);
     if (g->strip < 1) g->strip = 1;
     g->n_cells = n_cells;
     if (n_cells + 1 > g->cells_capacity) {

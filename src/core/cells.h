@@ -65,9 +65,14 @@ static inline const int32_t *neighbour_row(const neighbour_list *nl, size_t i, i
  * order, which is what the MPI build's slabs are made of (docs/mpi.md), whole strips each: a
  * box of fewer than CELL_MIN_STRIPS x CELL_STRIP_WIDTH cells along x, whose window is small
  * anyway, has strips of 1/CELL_MIN_STRIPS of its cells (at least one cell), so that it can be
- * split among up to CELL_MIN_STRIPS processes in slabs balanced to a strip. */
-#define CELL_STRIP_WIDTH 16
-#define CELL_MIN_STRIPS  16
+ * split among up to CELL_MIN_STRIPS processes in slabs balanced to a strip. And a strip full
+ * of liquid at the lattice's density holds at most CELL_STRIP_PARTICLES (narrower strips in a
+ * tall or wide box, at least one cell): a row's fluid spans about one strip's particles where
+ * it reaches into the next strip, which must fit the neighbour rows' 16-bit window, with room
+ * for the liquid to be compressed or heaped up in one strip by sloshing. */
+#define CELL_STRIP_WIDTH     16
+#define CELL_MIN_STRIPS      16
+#define CELL_STRIP_PARTICLES (NEIGHBOUR_WINDOW / 2)
 
 #define cells_setup      DIM_NAME(cells_setup)
 #define cells_column     DIM_NAME(cells_column)
@@ -79,8 +84,11 @@ static inline const int32_t *neighbour_row(const neighbour_list *nl, size_t i, i
 #define neighbours_free  DIM_NAME(neighbours_free)
 
 /* Lays out cells of side >= cell_size over the box [lo, hi]; particles outside it are
- * clamped into the border cells (still found, just less efficiently). */
-int cells_setup(cell_grid *g, const double lo[DIM], const double hi[DIM], double cell_size);
+ * clamped into the border cells (still found, just less efficiently). `spacing` is the
+ * particles' lattice spacing, which bounds the strips' width (CELL_STRIP_PARTICLES); 0: no
+ * bound from it. */
+int cells_setup(cell_grid *g, const double lo[DIM], const double hi[DIM], double cell_size,
+                double spacing);
 void cells_free(cell_grid *g);
 /* The column of cells (the cell coordinate along x) of position x along x, clamped into the
  * box as binning clamps it. */

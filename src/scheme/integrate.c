@@ -31,7 +31,7 @@ static int neighbour_grid(const solver *s, cell_grid *g, double cutoff)
         lo[d] = -cutoff;
         hi[d] = s->tank.size[d] + cutoff;
     }
-    return cells_setup(g, lo, hi, cutoff);
+    return cells_setup(g, lo, hi, cutoff, s->dv.dr);
 }
 
 size_t solver_strips_at_most(const solver *s)
