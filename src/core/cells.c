@@ -6,11 +6,11 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* The widest strip (in cells along x) that holds at most CELL_STRIP_PARTICLES at the lattice's
- * density, at least one cell. */
+/* The widest strip (in cells along x, 1 to CELL_STRIP_WIDTH) that holds at most
+ * CELL_STRIP_PARTICLES at the lattice's density. */
 static int strip_width_bound(const cell_grid *g, double spacing)
 {
-    double column = 1.0; /* particles in one column of cells, full of liquid */
+    double column = 1.0; /* particles in one column of cells along x, full of liquid */
     for (int d = 0; d < DIM; d++) column *= g->size / spacing * (d > 0 ? g->n[d] : 1);
     double width = floor(CELL_STRIP_PARTICLES / column);
     return width < 1.0 ? 1 : width > CELL_STRIP_WIDTH ? CELL_STRIP_WIDTH : (int)width;
@@ -33,10 +33,9 @@ int cells_setup(cell_grid *g, const double lo[DIM], const double hi[DIM], double
         if (s > size) size = s;
     }
     g->size = size;
+    int widest = spacing > 0.0 ? strip_width_bound(g, spacing) : CELL_STRIP_WIDTH;
     g->strip = g->n[0] / CELL_MIN_STRIPS;
-    if (g->strip > CELL_STRIP_WIDTH) g->strip = CELL_STRIP_WIDTH;
-    if (spacing > 0.0 && g->strip > strip_width_bound(g, spacing))
-        g->strip = strip_width_bound(g, spacing);
+    if (g->strip > widest) g->strip = widest;
     if (g->strip < 1) g->strip = 1;
     g->n_cells = n_cells;
     if (n_cells + 1 > g->cells_capacity) {
@@ -208,7 +207,9 @@ static int reserve_rows(neighbour_list *nl, size_t n_rows)
         nl->capacity_rows = n_rows;
     }
     size_t need = (n_rows ? n_rows : 1) * nl->row_capacity;
-    if (need <= nl->index_capacity && need > nl->index_capacity - nl->index_capacity / 8) return 0;
+    bool held = nl->wide ? nl->index != NULL : nl->packed != NULL; /* the form's array exists */
+    if (held && need <= nl->index_capacity && need > nl->index_capacity - nl->index_capacity / 8)
+        return 0;
     free(nl->packed);
     free(nl->index);
     nl->packed = NULL;
@@ -262,10 +263,7 @@ int neighbours_build(neighbour_list *nl, const cell_grid *g, double *const x[DIM
         }
         nl->longest = most;
         if (!misfit && most <= cap) return 0;
-        if (misfit) { /* a row beyond its 16-bit windows: every row whole, from now on */
-            nl->wide = true;
-            nl->index_capacity = 0;
-        }
+        if (misfit) nl->wide = true; /* a row beyond its 16-bit windows: 32 bits from now on */
         /* a row overflowed (strong compression): redo with room to spare */
         if (most > cap) nl->row_capacity = neighbours_row_room(most);
     }
