@@ -82,7 +82,7 @@ static void check_against_brute_force(size_t n, double radius)
     /* the scalar form's rows, in their order, for the lane forms to match */
     lanes_limit(0);
     nl.row_capacity = 4; /* force the overflow path */
-    assert_int_equal(neighbours_build(&nl, &grid, p.x, p.n_fluid, radius), 0);
+    assert_int_equal(neighbours_build(&nl, &grid, p.x, p.n_fluid, radius, (cells_room){0}), 0);
     size_t cap = nl.row_capacity;
     /* a few thousand particles: every row fits its 16-bit windows (cells.h) */
     assert_false(nl.wide);
@@ -91,7 +91,7 @@ static void check_against_brute_force(size_t n, double radius)
         lanes_limit(width);
         neighbours_free(&nl);
         nl.row_capacity = 4; /* force the overflow path */
-        assert_int_equal(neighbours_build(&nl, &grid, p.x, p.n_fluid, radius), 0);
+        assert_int_equal(neighbours_build(&nl, &grid, p.x, p.n_fluid, radius, (cells_room){0}), 0);
         assert_int_equal(nl.row_capacity, cap);
         assert_rows_equal(&nl, scalar_rows, cap);
     }
@@ -99,11 +99,11 @@ static void check_against_brute_force(size_t n, double radius)
     /* the rows kept whole, 32 bits an entry, are the same rows */
     neighbours_free(&nl);
     nl.wide = true;
-    assert_int_equal(neighbours_build(&nl, &grid, p.x, p.n_fluid, radius), 0);
+    assert_int_equal(neighbours_build(&nl, &grid, p.x, p.n_fluid, radius, (cells_room){0}), 0);
     assert_true(nl.wide);
     assert_rows_equal(&nl, scalar_rows, cap);
     neighbours_free(&nl);
-    assert_int_equal(neighbours_build(&nl, &grid, p.x, p.n_fluid, radius), 0);
+    assert_int_equal(neighbours_build(&nl, &grid, p.x, p.n_fluid, radius, (cells_room){0}), 0);
 
     int32_t *expected = malloc(p.n_total * sizeof *expected);
     int32_t *found = malloc(p.n_total * sizeof *found);
@@ -129,9 +129,28 @@ static void check_against_brute_force(size_t n, double radius)
     for (size_t i = 0; i < p.n_fluid; i++)
         if (nl.count[i] > longest) longest = nl.count[i];
     assert_int_equal(nl.longest, longest);
-    assert_int_equal(neighbours_build(&nl, &grid, p.x, p.n_fluid, radius), 0);
+    assert_int_equal(neighbours_build(&nl, &grid, p.x, p.n_fluid, radius, (cells_room){0}), 0);
     assert_int_equal(nl.row_capacity, (size_t)longest + (size_t)longest / 16);
     assert_rows_equal(&nl, scalar_rows, cap);
+
+    /* Positions copied into room a caller lends (cells_room): the same rows, no room of the
+     * grid's own, and the grid keeps no pointer into the lent room after the build. Room one
+     * double short goes unused. */
+    cells_free(&grid);
+    assert_int_equal(cells_setup(&grid, lo, hi, radius, 0.0), 0);
+    assert_int_equal(cells_bin(&grid, p.x, p.n_total), 0);
+    size_t room = DIM * p.n_total;
+    double *lent = malloc(room * sizeof *lent);
+    assert_int_equal(neighbours_build(&nl, &grid, p.x, p.n_fluid, radius, (cells_room){lent, room}),
+                     0);
+    assert_rows_equal(&nl, scalar_rows, cap);
+    assert_null(grid.own_xs);
+    for (int d = 0; d < DIM; d++) assert_null(grid.xs[d]);
+    assert_int_equal(
+        neighbours_build(&nl, &grid, p.x, p.n_fluid, radius, (cells_room){lent, room - 1}), 0);
+    assert_rows_equal(&nl, scalar_rows, cap);
+    assert_non_null(grid.own_xs);
+    free(lent);
     free(scalar_rows);
     free(expected);
     free(found);
@@ -178,7 +197,7 @@ static void test_rows_beyond_window(void **state)
     assert_int_equal(cells_bin(&grid, p.x, n), 0);
     neighbour_list nl = {0};
     for (int build = 0; build < 2; build++) {
-        assert_int_equal(neighbours_build(&nl, &grid, p.x, n, radius), 0);
+        assert_int_equal(neighbours_build(&nl, &grid, p.x, n, radius, (cells_room){0}), 0);
         assert_true(nl.wide);
         int32_t entries[nl.row_capacity];
         const int32_t *row = neighbour_row(&nl, 0, entries);

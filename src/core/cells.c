@@ -52,7 +52,7 @@ void cells_free(cell_grid *g)
     free(g->start);
     free(g->item);
     free(g->cell_of);
-    for (int d = 0; d < DIM; d++) free(g->xs[d]);
+    free(g->own_xs);
     memset(g, 0, sizeof *g);
 }
 
@@ -88,11 +88,6 @@ int cells_bin(cell_grid *g, double *const x[DIM], size_t n)
         uint32_t *cell_of = realloc(g->cell_of, n * sizeof *cell_of);
         if (!cell_of) return -1;
         g->cell_of = cell_of;
-        for (int d = 0; d < DIM; d++) {
-            double *xs = realloc(g->xs[d], n * sizeof *xs);
-            if (!xs) return -1;
-            g->xs[d] = xs;
-        }
         g->item_capacity = n;
     }
 #pragma omp parallel for schedule(static)
@@ -224,15 +219,29 @@ static int reserve_rows(neighbour_list *nl, size_t n_rows)
     return 0;
 }
 
-int neighbours_build(neighbour_list *nl, const cell_grid *g, double *const x[DIM], size_t n_rows,
-                     double radius)
+/* Points g->xs at room for the binned positions: the lent room, or the grid's own. */
+static int place_positions(cell_grid *g, size_t binned, cells_room lent)
+{
+    double *room = lent.at;
+    if (!room || lent.doubles < DIM * binned) {
+        if (DIM * binned > g->own_xs_capacity) {
+            free(g->own_xs);
+            g->own_xs = malloc(DIM * binned * sizeof *g->own_xs);
+            g->own_xs_capacity = g->own_xs ? DIM * binned : 0;
+            if (!g->own_xs) return -1;
+        }
+        room = g->own_xs;
+    }
+    for (int d = 0; d < DIM; d++) g->xs[d] = room + (size_t)d * binned;
+    return 0;
+}
+
+/* neighbours_build's rows, from the positions' copy in g->xs. */
+static int build_rows(neighbour_list *nl, const cell_grid *g, double *const x[DIM], size_t n_rows,
+                      double radius)
 {
     double r2max = radius * radius;
     cells_scan_fn scan = cells_scan_form();
-    /* the binned positions in item order, which the scan reads a block at a time */
-#pragma omp parallel for schedule(static)
-    for (size_t m = 0; m < g->start[g->n_cells]; m++)
-        for (int d = 0; d < DIM; d++) g->xs[d][m] = x[d][g->item[m]];
     nl->radius = radius;
     nl->n_rows = n_rows;
     /* rows sized by the last build's longest (neighbour counts change little from step to
@@ -267,4 +276,18 @@ int neighbours_build(neighbour_list *nl, const cell_grid *g, double *const x[DIM
         /* a row overflowed (strong compression): redo with room to spare */
         if (most > cap) nl->row_capacity = neighbours_row_room(most);
     }
+}
+
+int neighbours_build(neighbour_list *nl, cell_grid *g, double *const x[DIM], size_t n_rows,
+                     double radius, cells_room lent)
+{
+    size_t binned = g->start[g->n_cells];
+    /* the binned positions in item order, which the scan reads a block at a time */
+    if (place_positions(g, binned, lent)) return -1;
+#pragma omp parallel for schedule(static)
+    for (size_t m = 0; m < binned; m++)
+        for (int d = 0; d < DIM; d++) g->xs[d][m] = x[d][g->item[m]];
+    int status = build_rows(nl, g, x, n_rows, radius);
+    for (int d = 0; d < DIM; d++) g->xs[d] = NULL; /* the lent room goes back to its owner */
+    return status;
 }

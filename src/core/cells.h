@@ -17,9 +17,20 @@ typedef struct {
     size_t *start;     /* n_cells + 1: items of cell c are item[start[c] .. start[c+1]) */
     uint32_t *item;    /* particle indices, ascending within each cell */
     uint32_t *cell_of; /* cell of each binned particle */
-    double *xs[DIM];   /* their positions in item order, set by neighbours_build (cells_scan.h) */
-    size_t item_capacity, cells_capacity;
+    double *xs[DIM];   /* their positions in item order, during neighbours_build only (NULL
+                          after it): in the room the caller lends, or else in own_xs */
+    double *own_xs;    /* DIM x own_xs_capacity doubles, allocated only when no room is lent */
+    size_t item_capacity, cells_capacity, own_xs_capacity;
 } cell_grid;
+
+/* Memory a caller lends neighbours_build for the copy of the binned positions in item order
+ * (DIM doubles a binned particle), memory idle while the lists are built: the solver lends
+ * its RK4 work arrays, which hold nothing between steps (scheme/solver.h), and so the grid
+ * holds no copy of the positions between builds (3 doubles a particle and image in 3D). */
+typedef struct {
+    double *at;
+    size_t doubles;
+} cells_room;
 
 /* Neighbour lists: row i holds the indices j != i within `radius` of i, in the fixed order of
  * the cell scan (so every sum over them is the same for any number of threads). A row is kept
@@ -116,9 +127,10 @@ static inline size_t neighbours_row_room(int32_t longest)
     return (size_t)longest + (size_t)longest / 16;
 }
 /* Lists, for each of the first n_rows particles, its neighbours within `radius` among all the
- * binned particles. Returns 0, or -1 when out of memory. */
-int neighbours_build(neighbour_list *nl, const cell_grid *g, double *const x[DIM], size_t n_rows,
-                     double radius);
+ * binned particles; the positions' copy goes into `lent` where it is large enough (cells_room;
+ * (cells_room){0}: the grid's own). Returns 0, or -1 when out of memory. */
+int neighbours_build(neighbour_list *nl, cell_grid *g, double *const x[DIM], size_t n_rows,
+                     double radius, cells_room lent);
 void neighbours_free(neighbour_list *nl);
 
 #endif

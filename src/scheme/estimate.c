@@ -71,9 +71,12 @@ void DIM_NAME(estimate_run)(const config *cfg, const derived *dv, int threads, r
     double ball = DIM == 2 ? M_PI * reach * reach : 4.0 / 3.0 * M_PI * reach * reach * reach;
     double row = (double)neighbours_row_room((int32_t)ceil(ball / cell_volume));
     double lists = (row * sizeof(uint16_t) + 3.0 * sizeof(int32_t)) * n;
-    /* the cell grid: start per cell, item, cell_of and the position copy xs per particle */
-    double grid =
-        (cells + 1.0) * sizeof(size_t) + (2.0 * sizeof(uint32_t) + DIM * sizeof(double)) * total;
+    /* the cell grid: start per cell, item and cell_of per particle; the neighbour build's copy
+       of the positions goes into the RK4 arrays y0 and sum (cells_room), which are idle then,
+       unless the images outnumber them (never in a tank: 2 RK_MASS / DIM particles a fluid
+       particle) */
+    double grid = (cells + 1.0) * sizeof(size_t) + 2.0 * sizeof(uint32_t) * total;
+    if (DIM * total > 2.0 * RK_MASS * n) grid += DIM * sizeof(double) * total;
     /* surface tension's work, over fluid and ghosts, and its sums per body (at most one body
        a particle) */
     double st = cfg->surface_tension > 0.0

@@ -65,7 +65,8 @@ static int build_neighbours(solver *s, double dt, const tank_frame *frame)
     solver_update_eos(s);
     tank_refresh_ghosts(&s->tank, p, frame, s->pp.rho0, s->pp.c0);
     if (cells_bin(&s->grid, p->x, p->n_total)) return -1;
-    return neighbours_build(&s->nl, &s->grid, p->x, p->n_fluid, cutoff);
+    cells_room idle = {s->rk_block, 2 * RK_MASS * s->work_capacity}; /* solver.h */
+    return neighbours_build(&s->nl, &s->grid, p->x, p->n_fluid, cutoff, idle);
 }
 
 /* The integrated variables as a set of fields (FIELD_MASK). */

@@ -66,10 +66,14 @@ int solver_reserve(solver *s, size_t n_fluid)
 {
     size_t n = n_fluid ? n_fluid : 1;
     if (n <= s->work_capacity) return 0;
-    for (int v = 0; v < RK_MASS; v++)
-        if (grow((void **)&s->y0[v], n, sizeof(double)) ||
-            grow((void **)&s->sum[v], n, sizeof(double)))
-            return -1;
+    /* nothing in the block outlives a step (solver_advance writes it before reading it) */
+    free(s->rk_block);
+    s->rk_block = malloc(2 * RK_MASS * n * sizeof(double));
+    if (!s->rk_block) return -1;
+    for (int v = 0; v < RK_MASS; v++) {
+        s->y0[v] = s->rk_block + (size_t)v * n;
+        s->sum[v] = s->rk_block + (size_t)(RK_MASS + v) * n;
+    }
     for (int d = 0; d < DIM; d++)
         if (grow((void **)&s->k.du[d], n, sizeof(double))) return -1;
     if (grow((void **)&s->k.drho, n, sizeof(double))) return -1;
@@ -118,10 +122,9 @@ int solver_init_part(solver *s, const config *cfg, int part, int parts, char *er
 
 void solver_free(solver *s)
 {
-    for (int v = 0; v < RK_VARS; v++) {
-        free(s->y0[v]);
-        free(s->sum[v]);
-    }
+    free(s->rk_block);
+    free(s->y0[RK_MASS]);
+    free(s->sum[RK_MASS]);
 #define FREE_RATE_SCALAR(name) free(s->k.d##name);
 #define FREE_RATE_VECTOR(name)                                                                     \
     for (int d = 0; d < DIM; d++) free(s->k.d##name[d]);

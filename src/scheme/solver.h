@@ -62,6 +62,9 @@ typedef struct solver {
        the first step with variable masses on (solver_masses_vary), NULL before */
     double *y0[RK_VARS];  /* state at the start of the step */
     double *sum[RK_VARS]; /* weighted sum of the stage rates */
+    double *rk_block;     /* y0[v] and sum[v] for v < RK_MASS, in one block of 2 RK_MASS
+                             work_capacity doubles: between steps it holds nothing, and the
+                             neighbour build borrows it for its copy of the positions */
     rates k;              /* rates of the current stage */
     double *scratch;      /* n_fluid doubles */
     uint32_t *order;      /* n_fluid sort permutation (32-bit, as the cell grid's items) */
