@@ -77,12 +77,12 @@ void DIM_NAME(estimate_run)(const config *cfg, const derived *dv, int threads, r
        particle) */
     double grid = (cells + 1.0) * sizeof(size_t) + 2.0 * sizeof(uint32_t) * total;
     if (DIM * total > 2.0 * RK_MASS * n) grid += DIM * sizeof(double) * total;
-    /* surface tension's work, over fluid and ghosts, and its sums per body (at most one body
-       a particle) */
+    /* surface tension's work over the fluid (a wall's image reads its source's) and its sums
+       per body (at most one body a particle) */
     double st = cfg->surface_tension > 0.0
                     ? ((2.0 * DIM + 2.0 + BALANCE_FIRST + BALANCE_SECOND) * sizeof(double) +
                        sizeof(int32_t)) *
-                          total
+                          n
                     : 0.0;
 
     e->n_fluid = n;

@@ -133,7 +133,8 @@ static long frozen_terms(solver *s, const tank_frame *frame)
 static long surface_tension(solver *s, const tank_frame *frame)
 {
     (void)frame;
-    if (surface_tension_reserve(&s->st_work, s->p.n_total, s->bodies.count)) return -1;
+    if (surface_tension_reserve(&s->st_work, particles_images_begin(&s->p), s->bodies.count))
+        return -1;
     surface_tension_compute(&s->st, &s->pp.k, &s->p, &s->nl, &s->bodies, solver_bodies_domain(s),
                             &s->st_work);
     return 0;

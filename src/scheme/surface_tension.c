@@ -37,22 +37,22 @@ static int reserve_bodies(surface_tension_work *w, size_t n_bodies)
     return 0;
 }
 
-int surface_tension_reserve(surface_tension_work *w, size_t n_total, size_t n_bodies)
+int surface_tension_reserve(surface_tension_work *w, size_t n_sources, size_t n_bodies)
 {
-    if (n_total <= w->capacity) return reserve_bodies(w, n_bodies);
+    if (n_sources <= w->capacity) return reserve_bodies(w, n_bodies);
     surface_tension_free(w);
     int ok = 1;
     for (int d = 0; d < DIM; d++) {
-        ok &= (w->normal[d] = malloc(n_total * sizeof(double))) != NULL;
-        ok &= (w->smooth[d] = malloc(n_total * sizeof(double))) != NULL;
+        ok &= (w->normal[d] = malloc(n_sources * sizeof(double))) != NULL;
+        ok &= (w->smooth[d] = malloc(n_sources * sizeof(double))) != NULL;
     }
-    ok &= (w->kappa = malloc(n_total * sizeof(double))) != NULL;
-    ok &= (w->band_sum = malloc(n_total * sizeof(double))) != NULL;
+    ok &= (w->kappa = malloc(n_sources * sizeof(double))) != NULL;
+    ok &= (w->band_sum = malloc(n_sources * sizeof(double))) != NULL;
     if (!ok) {
         surface_tension_free(w);
         return -1;
     }
-    w->capacity = n_total;
+    w->capacity = n_sources;
     return reserve_bodies(w, n_bodies);
 }
 
@@ -67,6 +67,25 @@ void surface_tension_free(surface_tension_work *w)
     free(w->first);
     free(w->second);
     memset(w, 0, sizeof *w);
+}
+
+/* A work array's value at neighbour j, a fluid or halo particle or a wall's image: an image
+ * reads its source's entry (surface_tension_work), a vector mirrored by the image's map, the
+ * values a copy into the images would hold. */
+static inline size_t source_of(const particles *p, size_t j)
+{
+    return j < particles_images_begin(p) ? j : (size_t)p->ghost_source[j - p->n_fluid];
+}
+
+static inline double work_scalar(const particles *p, const double *a, size_t j)
+{
+    return a[source_of(p, j)];
+}
+
+static inline vec work_vector(const particles *p, double *const a[DIM], size_t j)
+{
+    vec v = vec_load(a, source_of(p, j));
+    return j < particles_images_begin(p) ? v : ghost_map_vector(particle_ghost_map(p, j), v);
 }
 
 /* In S_F, from the current positions: delta_Sigma = 2 |sum grad W V| / flat_integral
@@ -105,20 +124,6 @@ static void interface_and_normals(const surface_tension_params *st, const kernel
     }
 }
 
-/* Ghosts carry their source's interface function and mirrored normal (and, from
- * tank_mirror_step_fields, its S_F flag): the walls continue the surface at a right angle
- * (no contact-angle model, docs/surface-tension.md). */
-static void mirror_into_ghosts(particles *p, surface_tension_work *w)
-{
-#pragma omp parallel for schedule(static)
-    for (size_t g = particles_images_begin(p); g < p->n_total; g++) {
-        size_t i = (size_t)p->ghost_source[g - p->n_fluid];
-        p->interface[g] = p->interface[i];
-        w->band_sum[g] = w->band_sum[i];
-        vec_store(w->normal, g, ghost_map_vector(particle_ghost_map(p, g), vec_load(w->normal, i)));
-    }
-}
-
 /* The normals of the free-surface particles, Shepard-averaged over their free-surface
  * neighbours and normalised: the curvature differentiates these. A surface cut out of a
  * lattice is a staircase whose flat steps and sharp corners make the normal jump; averaging
@@ -138,22 +143,18 @@ static void smoothed_normals(const kernel *k, const particles *p, const neighbou
             pair pr;
             FOR_EACH_PAIR (k, p->x, nl, i, xi, pr) {
                 if (p->surface[pr.j] != SURFACE_FREE) continue;
-                sum = vec_axpy(sum, pr.w * p->vol[pr.j], vec_load(normal, pr.j));
+                sum = vec_axpy(sum, pr.w * p->vol[pr.j], work_vector(p, normal, pr.j));
             }
         }
         double norm = vec_norm(sum);
         vec_store(smooth, i, norm > 0.0 ? vec_scale(sum, 1.0 / norm) : sum);
     }
     for (int c = 0; c < DIM; c++) bodies_share(d, p, smooth[c]);
-    for (size_t g = particles_images_begin(p); g < p->n_total; g++) {
-        size_t i = (size_t)p->ghost_source[g - p->n_fluid];
-        vec_store(smooth, g, ghost_map_vector(particle_ghost_map(p, g), vec_load(smooth, i)));
-    }
 }
 
 /* The curvature of the free-surface particles, from their free-surface neighbours only: the
  * outermost layer is where the normal is reliable, and deeper layers would measure the
- * larger curvature of the parallel surfaces below it. Ghosts copy their source's. */
+ * larger curvature of the parallel surfaces below it. Ghosts read their source's. */
 static void surface_curvature(const surface_tension_params *st, const kernel *k, const particles *p,
                               const neighbour_list *nl, const bodies_domain *d,
                               double *const normal[DIM], double *kappa)
@@ -167,12 +168,11 @@ static void surface_curvature(const surface_tension_params *st, const kernel *k,
         pair pr;
         FOR_EACH_PAIR (k, p->x, nl, i, xi, pr) {
             if (p->surface[pr.j] != SURFACE_FREE) continue;
-            curvature_pair(&sums, ni, vec_load(normal, pr.j), pr.r_ji, pr.f, p->vol[pr.j]);
+            curvature_pair(&sums, ni, work_vector(p, normal, pr.j), pr.r_ji, pr.f, p->vol[pr.j]);
         }
         kappa[i] = curvature_value(&sums, DIM, st->dr);
     }
     bodies_share(d, p, kappa);
-    tank_copy_to_ghosts(p, kappa);
 }
 
 /* The force on the particles of S_F, -sigma kappa n delta V, with all three factors taken as
@@ -205,11 +205,11 @@ static void band_force(const surface_tension_params *st, const kernel *k, partic
             FOR_EACH_PAIR (k, p->x, nl, i, xi, pr) {
                 if (p->interface[pr.j] == 0.0) continue;
                 double w = pr.w, wv = w * p->vol[pr.j];
-                delta += w * p->interface[pr.j] * p->vol[pr.j] / band_sum[pr.j];
+                delta += w * p->interface[pr.j] * p->vol[pr.j] / work_scalar(p, band_sum, pr.j);
                 if (p->surface[pr.j] != SURFACE_FREE) continue;
                 sum_free += wv;
-                sum_kappa += wv * kappa_surface[pr.j];
-                sum_normal = vec_axpy(sum_normal, wv, vec_load(smooth, pr.j));
+                sum_kappa += wv * work_scalar(p, kappa_surface, pr.j);
+                sum_normal = vec_axpy(sum_normal, wv, work_vector(p, smooth, pr.j));
             }
             double length = vec_norm(sum_normal);
             if (sum_free > 0.0 && length > 0.0) {
@@ -315,7 +315,10 @@ void surface_tension_compute(const surface_tension_params *st, const kernel *k, 
     bodies_share(d, p, p->interface);
     bodies_share(d, p, w->band_sum);
     for (int c = 0; c < DIM; c++) bodies_share(d, p, w->normal[c]);
-    mirror_into_ghosts(p, w);
+    /* ghosts carry their source's interface function (and, from tank_mirror_step_fields, its
+       S_F flag) and read its mirrored normal (work_vector): the walls continue the surface at
+       a right angle (no contact-angle model, docs/surface-tension.md) */
+    tank_copy_to_ghosts(p, p->interface);
     smoothed_normals(k, p, nl, d, w->normal, w->smooth);
     surface_curvature(st, k, p, nl, d, w->smooth, w->kappa);
     band_force(st, k, p, nl, w->smooth, w->kappa, w->band_sum);

@@ -35,9 +35,12 @@ enum {
     BALANCE_SECOND = 12 /* of the second */
 };
 
-/* Work arrays of the force, kept between calls so that a stage never allocates. */
+/* Work arrays of the force, kept between calls so that a stage never allocates. They hold the
+ * fluid and an MPI run's halo: a wall's image has no entry of its own and reads its source's
+ * (mirrored, for a vector), as the particle store's FIELD_SOURCES_ONLY fields would; the
+ * images of a narrow 3D tank are 40-60 % of its fluid. */
 typedef struct {
-    size_t capacity;        /* particles, fluid and ghosts */
+    size_t capacity;        /* particles: the fluid and the halo */
     double *normal[DIM];    /* the normal of S_F at the stage's positions */
     double *smooth[DIM];    /* its Shepard average over the free surface */
     double *kappa;          /* the curvature of the free-surface particles */
@@ -56,15 +59,15 @@ typedef struct {
 surface_tension_params surface_tension_setup(const kernel *k, double dr, double sigma,
                                              double lambda_min);
 
-/* Makes room in w for n_total particles and n_bodies bodies. Returns 0, or -1 when out of
- * memory. */
-int surface_tension_reserve(surface_tension_work *w, size_t n_total, size_t n_bodies);
+/* Makes room in w for n_sources particles (the fluid and the halo: particles_images_begin) and
+ * n_bodies bodies. Returns 0, or -1 when out of memory. */
+int surface_tension_reserve(surface_tension_work *w, size_t n_sources, size_t n_bodies);
 void surface_tension_free(surface_tension_work *w);
 
 /* Fills p->interface (delta_Sigma, 1/m, normalised so that it integrates to 1 across a flat
  * lattice surface), p->curvature and p->st_force (the force on each fluid particle, N) from
  * the current positions, with the step's S_F (fields_geometry) and bodies (bodies_find), and
- * mirrors interface and S_F into the ghosts; w holds room for p->n_total particles
+ * mirrors interface and S_F into the ghosts; w holds room for the fluid and the halo
  * (surface_tension_reserve). On every body of liquid that touches no wall, the force and its moment
  * sum to zero exactly, as the continuum's do: each such body gets its discrete residuals removed,
  * so that its momentum and angular momentum are conserved. Across processes through d (the
