@@ -197,6 +197,7 @@ size_t tank_bounce_back(const tank *t, particles *p, double dr, double dt)
             dv = away_from_wall(dv, n);
         }
         vec_store(p->u, i, u);
+        vec_store(p->u_wall, i, u); /* a fluid particle's viscous velocity is its own */
         vec_store(p->shift, i, shift);
         vec_store(p->correction, i, dv);
         bounced++;
