@@ -67,6 +67,14 @@ static inline const int32_t *neighbour_row(const neighbour_list *nl, size_t i, i
     return entries;
 }
 
+/* Whether row i may hold a ghost (a wall's image or a halo particle): the packed form's ghost
+ * window has a base, the least ghost index (>= n_rows), only then (pack_row); the wide form
+ * cannot tell and says yes. */
+static inline bool neighbour_row_has_ghosts(const neighbour_list *nl, size_t i)
+{
+    return nl->wide || nl->base[2 * i + 1] != 0;
+}
+
 /* Cells are numbered strip by strip: the box is cut along x into strips of CELL_STRIP_WIDTH
  * cells, and within a strip row by row (x fastest, then y, then z). The particles, sorted by
  * cell, then have their neighbours within three rows of one strip (nine in 3D), whatever the

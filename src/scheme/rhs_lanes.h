@@ -19,6 +19,9 @@ rhs_lanes_sums(const physics_params *pp, const particles *p, const neighbour_lis
     lane_real pi = lane_load(p->p, i0), nu_ti = lane_load(p->nu_t, i0);
     lane_real drho = lane_broadcast(0.0), mass_flux = lane_broadcast(0.0);
     lane_vec force = lane_vec_zero();
+    /* whether any of the rows reaches a ghost: most blocks' rows lie away from the walls */
+    bool ghosts = false;
+    for (int l = 0; l < LANES; l++) ghosts |= neighbour_row_has_ghosts(nl, i0 + (size_t)l);
     lane_pair pr;
     FOR_EACH_LANE_PAIR (&pp->k, p->x, nl, i0, pr) {
         const int32_t *j = pr.j;
@@ -62,7 +65,10 @@ rhs_lanes_sums(const physics_params *pp, const particles *p, const neighbour_lis
             mean = lane_select(mean < pp->nu_t_cap, mean, lane_broadcast(pp->nu_t_cap));
             mu_eff += pp->rho0 * mean;
         }
-        lane_vec uw_ji = lane_vec_sub(lane_vec_gather(p->u_wall, j), uwi);
+        /* the viscous term's velocity: a fluid neighbour's is its own (u_wall = u,
+           solver_update_eos and tank_bounce_back), so u_wall is read only in blocks whose rows
+           reach a ghost: the same values, DIM loads a pair fewer elsewhere */
+        lane_vec uw_ji = lane_vec_sub(ghosts ? lane_vec_gather(p->u_wall, j) : uj, uwi);
         lane_real pi_ij = lane_vec_dot(uw_ji, r_ji) / r2;
         force = lane_vec_add_where(within, force,
                                    lane_vec_scale(r_ji, VISCOSITY_K * mu_eff * pi_ij * f * vj));
