@@ -97,7 +97,6 @@ int tank_make_ghosts(const tank *t, particles *p, double reach)
                 p->ghost_kind[g - n_fluid] = GHOST_WALL_IMAGE;
                 p->ghost_source[g - n_fluid] = (int32_t)i;
                 p->ghost_map[g - n_fluid] = (uint8_t)walls;
-                p->id[g] = p->id[i];
                 g++;
             }
             int d = 0;
@@ -129,8 +128,7 @@ void tank_refresh_ghosts(const tank *t, particles *p, const tank_frame *frame, d
         double pg = p->p[i] + p->rho[i] * vec_dot(force, vec_sub(xg, xi));
         p->p[g] = pg;
         p->rho[g] = eos_density(pg, rho0, c0);
-        p->m[g] = p->m[i];
-        p->vol[g] = p->m[g] / p->rho[g];
+        p->vol[g] = p->m[i] / p->rho[g]; /* an image has the mass of its source */
     }
 }
 

@@ -31,8 +31,7 @@ enum {
 
 #define PARTICLE_FIELDS(SCALAR, VECTOR)                                                            \
     /* state of every particle (ghosts: mirrored from their source each RK stage) */               \
-    SCALAR(int64_t, id, FIELD_STATE, "id",                                                         \
-           "global id of the fluid particle (a ghost: its source's)")                              \
+    SCALAR(int64_t, id, FIELD_STATE | FIELD_SOURCES_ONLY, "id", "global id of the fluid particle") \
     VECTOR(double, x, FIELD_STATE, "position", "position, tank frame")                             \
     VECTOR(double, u, FIELD_STATE, "velocity", "velocity, tank frame; ghosts: free-slip image")    \
     VECTOR(double, u_wall, 0, NULL,                                                                \
@@ -40,7 +39,8 @@ enum {
            "the ghost's no-slip / free-slip image")                                                \
     SCALAR(double, rho, FIELD_STATE, "density", "density")                                         \
     SCALAR(double, p, 0, "pressure", "pressure (EOS)")                                             \
-    SCALAR(double, m, FIELD_STATE, "mass", "mass")                                                 \
+    SCALAR(double, m, FIELD_STATE | FIELD_SOURCES_ONLY, "mass",                                    \
+           "mass (a wall's image: its source's, read there)")                                      \
     SCALAR(double, vol, 0, "volume", "SPH volume m/rho")                                           \
     /* per-step fields, frozen over the RK stages (sec. 2.4); ghosts copy their source's */        \
     VECTOR(double, grad_rho, 0, NULL, "renormalized density gradient <grad rho>^L")                \
