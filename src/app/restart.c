@@ -4,7 +4,7 @@
  * What is saved is the state just after a step, before the next solver_prepare: everything
  * that solver_prepare and the outputs read and do not recompute. That is, per fluid particle
  * in the current order (the order decides the next cell sort, and with it the order of every
- * sum): id, x, u, rho, m (p, V and u_wall follow from them by solver_update_eos; the per-step
+ * sum): id, x, u, rho, m (p and V follow from them by solver_update_eos; the per-step
  * fields lambda, surface, shifting, diffusion, ... are recomputed by solver_prepare); the
  * scalars that the next time step and neighbour skin read (max_acc) or that accumulate
  * (work_in, work_st, work_moves); the whole eta controller, its adaptive history included (EdBC's
@@ -472,7 +472,7 @@ int restart_load(run *r, const checkpoint_data *cd, char *err, size_t err_len)
         return -1;
     }
     r->resumed = true;
-    solver_update_eos(s); /* p, V and u_wall of the loaded state */
+    solver_update_eos(s); /* p and V of the loaded state */
     return 0;
 }
 

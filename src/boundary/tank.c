@@ -94,6 +94,10 @@ int tank_make_ghosts(const tank *t, particles *p, double reach)
                    fluid alone) */
                 if (g == (size_t)INT32_MAX) return -1;
                 if (g + 1 > p->capacity && particles_reserve_images(p, g + 1)) return -1;
+                /* the ghosts' own fields: room for the store's tail, which grows in steps */
+                if (g + 1 - n_fluid > p->ghosts_capacity &&
+                    particles_reserve_ghosts(p, p->capacity - n_fluid))
+                    return -1;
                 p->ghost_kind[g - n_fluid] = GHOST_WALL_IMAGE;
                 p->ghost_source[g - n_fluid] = (int32_t)i;
                 p->ghost_map[g - n_fluid] = (uint8_t)walls;
@@ -122,7 +126,7 @@ void tank_refresh_ghosts(const tank *t, particles *p, const tank_frame *frame, d
         vec ug = ghost_map_vector(map, ui);
         vec_store(p->x, g, xg);
         vec_store(p->u, g, ug);
-        vec_store(p->u_wall, g, no_slip ? vec_scale(ui, -1.0) : ug);
+        vec_store(p->u_wall, g - n_fluid, no_slip ? vec_scale(ui, -1.0) : ug);
         /* the hydrostatic continuation under the source's body force */
         vec force = frame_body_force(frame, xi, ui);
         double pg = p->p[i] + p->rho[i] * vec_dot(force, vec_sub(xg, xi));
@@ -195,7 +199,6 @@ size_t tank_bounce_back(const tank *t, particles *p, double dr, double dt)
             dv = away_from_wall(dv, n);
         }
         vec_store(p->u, i, u);
-        vec_store(p->u_wall, i, u); /* a fluid particle's viscous velocity is its own */
         vec_store(p->shift, i, shift);
         vec_store(p->correction, i, dv);
         bounced++;

@@ -70,9 +70,8 @@ void tank_copy_to_ghosts(const particles *p, double *field);
  * dr/4 to a wall within the step `dt` (or past it) has the normal components of these
  * velocities that point at the wall reversed, tangential ones kept. Looking a step ahead matters:
  * during a roof impact a particle moves half a spacing per step. Reversing u alone fails with ALE,
- * where du may carry a particle into the wall that u takes away from it. The bounced u is also
- * the particle's u_wall (the viscous term's velocity, a fluid particle's own). Returns the
- * particles bounced. */
+ * where du may carry a particle into the wall that u takes away from it. Returns the particles
+ * bounced. */
 size_t tank_bounce_back(const tank *t, particles *p, double dr, double dt);
 
 /* Distance to the nearest wall (sec. 2.5) and that wall's normal (into the liquid). */

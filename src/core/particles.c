@@ -15,11 +15,14 @@ static int grow(void **ptr, size_t old, size_t count, size_t size)
     return 0;
 }
 
-/* Grows the fields whose FIELD_SOURCES_ONLY flag is `sources_only` from `old` to `capacity`
- * slots. */
-static int grow_fields(particles *p, bool sources_only, size_t old, size_t capacity)
+/* The fields' room classes: the whole store, the fluid and halo (FIELD_SOURCES_ONLY), the
+ * tail's ghosts (FIELD_GHOSTS_ONLY). */
+#define ROOM_CLASS(flags) ((flags) & (FIELD_SOURCES_ONLY | FIELD_GHOSTS_ONLY))
+
+/* Grows the fields of room class `room` (ROOM_CLASS) from `old` to `capacity` slots. */
+static int grow_fields(particles *p, unsigned room, size_t old, size_t capacity)
 {
-#define SELECTED(flags) ((((flags)&FIELD_SOURCES_ONLY) != 0) == sources_only)
+#define SELECTED(flags) (ROOM_CLASS(flags) == room)
 #define GROW_SCALAR(type, name, flags, snapshot, comment)                                          \
     if (SELECTED(flags) && grow((void **)&p->name, old, capacity, sizeof(type))) return -1;
 #define GROW_VECTOR(type, name, flags, snapshot, comment)                                          \
@@ -39,7 +42,7 @@ int particles_reserve_images(particles *p, size_t capacity)
 {
     if (capacity <= p->capacity) return 0;
     capacity = grown_to(p->capacity, capacity);
-    if (grow_fields(p, false, p->capacity, capacity)) return -1;
+    if (grow_fields(p, 0, p->capacity, capacity)) return -1;
     p->capacity = capacity;
     return 0;
 }
@@ -48,10 +51,19 @@ int particles_reserve(particles *p, size_t capacity)
 {
     if (capacity > p->sources_capacity) {
         size_t sources = grown_to(p->sources_capacity, capacity);
-        if (grow_fields(p, true, p->sources_capacity, sources)) return -1;
+        if (grow_fields(p, FIELD_SOURCES_ONLY, p->sources_capacity, sources)) return -1;
         p->sources_capacity = sources;
     }
     return particles_reserve_images(p, p->sources_capacity);
+}
+
+int particles_reserve_ghosts(particles *p, size_t n_ghosts)
+{
+    if (n_ghosts <= p->ghosts_capacity) return 0;
+    size_t room = grown_to(p->ghosts_capacity, n_ghosts);
+    if (grow_fields(p, FIELD_GHOSTS_ONLY, p->ghosts_capacity, room)) return -1;
+    p->ghosts_capacity = room;
+    return 0;
 }
 
 int particles_init(particles *p, size_t capacity)
@@ -83,6 +95,8 @@ static size_t slot_bytes(unsigned flags)
 size_t particles_bytes_per_slot(void) { return slot_bytes(0); }
 
 size_t particles_bytes_sources_only(void) { return slot_bytes(FIELD_SOURCES_ONLY); }
+
+size_t particles_bytes_ghosts_only(void) { return slot_bytes(FIELD_GHOSTS_ONLY); }
 
 /* The state is reordered through a scratch array of doubles. */
 #define FITS_SCALAR(type, name, flags, snapshot, comment)                                          \

@@ -18,15 +18,18 @@
  * are (scalars), or mirrored across the ghost's walls (vectors). FIELD_SOURCES_ONLY marks the
  * fields that no wall image holds, read and written for the fluid and an MPI run's halo only:
  * they have room for `sources_capacity` slots, not the whole store's (the walls' images of a
- * narrow 3D tank are 40-45 % of its fluid). New slots start as zeros (shifting and lambda are
- * read before anything writes them). Adding a field is one line here: allocation, growth, the
- * bytes of a slot and the reordering follow from the table. */
+ * narrow 3D tank are 40-45 % of its fluid). FIELD_GHOSTS_ONLY marks the fields of the tail
+ * alone (an MPI run's halo and the walls' images), indexed g - n_fluid, with room for
+ * `ghosts_capacity` ghosts (particles_reserve_ghosts). New slots start as zeros (shifting and
+ * lambda are read before anything writes them). Adding a field is one line here: allocation,
+ * growth, the bytes of a slot and the reordering follow from the table. */
 enum {
     FIELD_STATE = 1,
     FIELD_GHOST_COPY = 2,
     FIELD_GHOST_MIRROR = 4,
     FIELD_SURFACE_TENSION = 8,
-    FIELD_SOURCES_ONLY = 16 /* held by the fluid and an MPI run's halo, never by a wall image */
+    FIELD_SOURCES_ONLY = 16, /* held by the fluid and an MPI run's halo, never by a wall image */
+    FIELD_GHOSTS_ONLY = 32   /* held by the tail [n_fluid, n_total) only, indexed g - n_fluid */
 };
 
 #define PARTICLE_FIELDS(SCALAR, VECTOR)                                                            \
@@ -34,9 +37,6 @@ enum {
     SCALAR(int64_t, id, FIELD_STATE | FIELD_SOURCES_ONLY, "id", "global id of the fluid particle") \
     VECTOR(double, x, FIELD_STATE, "position", "position, tank frame")                             \
     VECTOR(double, u, FIELD_STATE, "velocity", "velocity, tank frame; ghosts: free-slip image")    \
-    VECTOR(double, u_wall, 0, NULL,                                                                \
-           "velocity seen by the viscous term and the velocity gradient: the fluid's own, or "     \
-           "the ghost's no-slip / free-slip image")                                                \
     SCALAR(double, rho, FIELD_STATE, "density", "density")                                         \
     SCALAR(double, p, 0, "pressure", "pressure (EOS)")                                             \
     SCALAR(double, m, FIELD_STATE | FIELD_SOURCES_ONLY, "mass",                                    \
@@ -82,9 +82,15 @@ enum {
     VECTOR(double, st_force, FIELD_SOURCES_ONLY, NULL,                                             \
            "F^st V_i, the surface-tension force on the particle at the current RK stage, N")       \
     /* ghosts only, indexed g - n_fluid */                                                         \
-    SCALAR(uint8_t, ghost_kind, 0, NULL, "what the ghost is (ghost_kind): a wall's image")         \
-    SCALAR(int32_t, ghost_source, 0, NULL, "fluid index it mirrors")                               \
-    SCALAR(uint8_t, ghost_map, 0, NULL, "its map from the source: an index into ghost_maps")
+    VECTOR(double, u_wall, FIELD_GHOSTS_ONLY, NULL,                                                \
+           "a wall image's velocity as the viscous term and the velocity gradient see it: the "    \
+           "no-slip or free-slip image (a fluid or halo particle's is its u: "                     \
+           "particle_viscous_velocity)")                                                           \
+    SCALAR(uint8_t, ghost_kind, FIELD_GHOSTS_ONLY, NULL,                                           \
+           "what the ghost is (ghost_kind): a wall's image")                                       \
+    SCALAR(int32_t, ghost_source, FIELD_GHOSTS_ONLY, NULL, "fluid index it mirrors")               \
+    SCALAR(uint8_t, ghost_map, FIELD_GHOSTS_ONLY, NULL,                                            \
+           "its map from the source: an index into ghost_maps")
 
 /* The fields the RK4 integrator advances (scheme/integrate.c): the persistent state less the
  * id. The right-hand side stores the rate d<name>/dt of each but the position (scheme/rhs.h),
@@ -126,6 +132,7 @@ _Static_assert(FIELD_BITS <= 64, "the field masks are 64 bits");
 typedef struct {
     size_t n_fluid, n_halo, n_total, capacity;
     size_t sources_capacity; /* the slots of the FIELD_SOURCES_ONLY fields, at most capacity */
+    size_t ghosts_capacity;  /* the slots of the FIELD_GHOSTS_ONLY fields */
     PARTICLE_FIELDS(PARTICLE_SCALAR_MEMBER, PARTICLE_VECTOR_MEMBER)
     const ghost_map *ghost_maps; /* the table of the provider that made the ghosts */
 } particles;
@@ -141,6 +148,13 @@ typedef enum {
 /* The first wall image of the tail; the fluid particles and the halo before it are the images'
  * sources. */
 static inline size_t particles_images_begin(const particles *p) { return p->n_fluid + p->n_halo; }
+
+/* The velocity the viscous term and the velocity gradient see at particle j: a fluid or halo
+ * particle's own, a wall image's no-slip or free-slip image (u_wall). */
+static inline vec particle_viscous_velocity(const particles *p, size_t j)
+{
+    return j < particles_images_begin(p) ? vec_load(p->u, j) : vec_load(p->u_wall, j - p->n_fluid);
+}
 
 /* The map of ghost g (n_fluid <= g < n_total). */
 static inline const ghost_map *particle_ghost_map(const particles *p, size_t g)
@@ -177,6 +191,8 @@ static inline int particle_is_wall_image(const particles *p, size_t j)
 #define particles_free               DIM_NAME(particles_free)
 #define particles_reserve            DIM_NAME(particles_reserve)
 #define particles_reserve_images     DIM_NAME(particles_reserve_images)
+#define particles_reserve_ghosts     DIM_NAME(particles_reserve_ghosts)
+#define particles_bytes_ghosts_only  DIM_NAME(particles_bytes_ghosts_only)
 #define particles_bytes_sources_only DIM_NAME(particles_bytes_sources_only)
 #define particles_permute_fluid      DIM_NAME(particles_permute_fluid)
 #define particles_bytes_per_slot     DIM_NAME(particles_bytes_per_slot)
@@ -199,10 +215,15 @@ int particles_reserve(particles *p, size_t capacity);
 /* particles_reserve for slots that only wall images will take (from particles_images_begin
  * on): the FIELD_SOURCES_ONLY fields keep their room. */
 int particles_reserve_images(particles *p, size_t capacity);
+/* Room in the FIELD_GHOSTS_ONLY fields for n_ghosts ghosts (the tail's halo and images), and at
+ * least particles_grown of what they held, keeping the contents: the ghosts' makers call it as
+ * they append (tank_make_ghosts, an MPI run's halo_build). Returns 0 or -1. */
+int particles_reserve_ghosts(particles *p, size_t n_ghosts);
 /* The bytes one particle slot takes in the store (every array of it), and of those the
- * FIELD_SOURCES_ONLY fields'. */
+ * FIELD_SOURCES_ONLY fields' and the FIELD_GHOSTS_ONLY fields'. */
 size_t particles_bytes_per_slot(void);
 size_t particles_bytes_sources_only(void);
+size_t particles_bytes_ghosts_only(void);
 /* Reorders the persistent fluid state (the fields marked FIELD_STATE: id, x, u, rho, m) so
  * that new slot k holds old particle order[k]; scratch needs n_fluid doubles. */
 void particles_permute_fluid(particles *p, const uint32_t *order, double *scratch);

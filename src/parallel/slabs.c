@@ -201,7 +201,8 @@ int halo_build(halo_plan *h, slabs *s, const cell_grid *g, particles *p, MPI_Com
     h->n_recv[0] = (size_t)got[0];
     h->n_recv[1] = (size_t)got[1];
     size_t n_total = p->n_fluid + h->n_recv[0] + h->n_recv[1];
-    if (particles_reserve(p, n_total)) MPI_Abort(comm, 3);
+    if (particles_reserve(p, n_total) || particles_reserve_ghosts(p, n_total - p->n_fluid))
+        MPI_Abort(comm, 3);
     for (size_t t = p->n_fluid; t < n_total; t++) {
         p->ghost_kind[t - p->n_fluid] = GHOST_HALO;
         p->ghost_map[t - p->n_fluid] = 0;

@@ -54,12 +54,14 @@ void DIM_NAME(estimate_run)(const config *cfg, const derived *dv, int threads, r
     double total = n + ghosts;
 
     /* the store: lattice_fill's room, grown as particles_reserve_images grows it for the
-       ghosts; the fields no image holds (FIELD_SOURCES_ONLY) for the fluid alone */
+       ghosts; the fields no image holds (FIELD_SOURCES_ONLY) for the fluid alone, the
+       ghosts' own (FIELD_GHOSTS_ONLY) for the store's tail */
     size_t capacity = particles_initial_room((size_t)n);
     while ((double)capacity < total) capacity = particles_grown(capacity);
     double sources_only = (double)particles_bytes_sources_only();
-    double store =
-        ((double)particles_bytes_per_slot() - sources_only) * capacity + sources_only * n;
+    double ghosts_only = (double)particles_bytes_ghosts_only();
+    double store = ((double)particles_bytes_per_slot() - sources_only - ghosts_only) * capacity +
+                   sources_only * n + ghosts_only * ((double)capacity - n);
     /* solver_reserve: y0 and sum (RK_VARS each) and the stored rates (PARTICLE_N_RATED),
        the masses' three only where they may vary (eta = 1 or the switch), scratch, the order */
     double rk = 2.0 * RK_VARS + PARTICLE_N_RATED - (models_params(cfg->scheme).eta ? 0.0 : 3.0);

@@ -56,7 +56,7 @@ void fields_geometry(const physics_params *pp, const tank *t, particles *p,
         FOR_EACH_PAIR (k, p->x, nl, i, xi, pr) {
             size_t j = pr.j;
             neighbour_sums_add(&s, &pr, pr.w, p->vol[j], p->rho[j] - rhoi,
-                               vec_sub(vec_load(p->u_wall, j), ui));
+                               vec_sub(particle_viscous_velocity(p, j), ui));
         }
         double lambda = mat_min_eigenvalue(&s.l);
         p->lambda[i] = lambda;

@@ -13,16 +13,15 @@
 
 /* What the momentum terms need of particle i. */
 typedef struct {
-    vec u, u_wall, shift; /* velocity, the viscous term's velocity, shifting velocity du */
-    double p, nu_t, mu;   /* pressure, eddy viscosity, rho0 nu */
+    vec u, shift;       /* velocity (also the viscous term's), shifting velocity du */
+    double p, nu_t, mu; /* pressure, eddy viscosity, rho0 nu */
 } momentum_particle;
 
 static inline momentum_particle momentum_particle_of(const physics_params *pp, const particles *p,
                                                      size_t i)
 {
-    momentum_particle m = {
-        vec_load(p->u, i), vec_load(p->u_wall, i), vec_load(p->shift, i), p->p[i],
-        p->nu_t[i],        pp->rho0 * pp->nu};
+    momentum_particle m = {vec_load(p->u, i), vec_load(p->shift, i), p->p[i], p->nu_t[i],
+                           pp->rho0 * pp->nu};
     return m;
 }
 
@@ -44,7 +43,7 @@ momentum_pair_add(vec force, const physics_params *pp, const particles *p,
     force = vec_add(force, pressure_pair(mi->p, p->p[j], pr->r_ji, pr->f, vj));
     double mu_eff = mi->mu;
     if (les) mu_eff += pp->rho0 * harmonic_mean_capped(mi->nu_t, p->nu_t[j], pp->nu_t_cap);
-    vec uw_ji = vec_sub(vec_load(p->u_wall, j), mi->u_wall);
+    vec uw_ji = vec_sub(particle_viscous_velocity(p, j), mi->u);
     return vec_add(force, viscosity_pair(mu_eff, uw_ji, pr->r_ji, pr->r2, pr->f, vj));
 }
 

@@ -166,8 +166,8 @@ static const step_pass prepare_passes[] = {
      F(shift) | F(correction), shifts_or_corrects, shifting_and_correction},
     {"one normal speed per body", F(vol) | F(lambda) | F(normal) | F(correction), F(correction),
      corrects, correction_per_body},
-    {"bounce-back", F(x) | F(u) | F(shift) | F(correction),
-     F(u) | F(u_wall) | F(shift) | F(correction), NULL, bounce_back},
+    {"bounce-back", F(x) | F(u) | F(shift) | F(correction), F(u) | F(shift) | F(correction), NULL,
+     bounce_back},
     /* the walls' images take the per-step fields of their sources (tank_mirror_step_fields) */
     {"frozen terms",
      F(x) | F(u) | F(rho) | F(vol) | F(grad_rho) | F(nu_delta) | F(nu_t) | F(surface) | F(shift) |

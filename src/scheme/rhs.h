@@ -37,7 +37,7 @@ static inline vec rhs_transport_velocity(const physics_params *pp, const particl
 
 #define rhs_compute DIM_NAME(rhs_compute)
 
-/* Needs fluid p, vol, u_wall and the ghosts refreshed for this stage, and the frozen per-step
+/* Needs fluid p and vol and the ghosts refreshed for this stage, and the frozen per-step
  * fields. `frame` gives the body force of the tank frame at each particle (boundary/frame.h,
  * theory §6: g - a_tank(t) for a translating tank);
  * eta in [0, 1] weighs the mass equation of Eq. (3) (0: constant masses, and out->dm is not

@@ -14,7 +14,7 @@ rhs_lanes_sums(const physics_params *pp, const particles *p, const neighbour_lis
                const bool les, const bool ale, const bool variable_mass, rhs_sums out[LANES])
 {
     lane_vec ui = lane_vec_load(p->u, i0);
-    lane_vec uwi = lane_vec_load(p->u_wall, i0), dui = lane_vec_load(p->shift, i0);
+    lane_vec dui = lane_vec_load(p->shift, i0);
     lane_real rhoi = lane_load(p->rho, i0), vi = lane_load(p->vol, i0);
     lane_real pi = lane_load(p->p, i0), nu_ti = lane_load(p->nu_t, i0);
     lane_real drho = lane_broadcast(0.0), mass_flux = lane_broadcast(0.0);
@@ -22,6 +22,7 @@ rhs_lanes_sums(const physics_params *pp, const particles *p, const neighbour_lis
     /* whether any of the rows reaches a ghost: most blocks' rows lie away from the walls */
     bool ghosts = false;
     for (int l = 0; l < LANES; l++) ghosts |= neighbour_row_has_ghosts(nl, i0 + (size_t)l);
+    const size_t images = particles_images_begin(p);
     lane_pair pr;
     FOR_EACH_LANE_PAIR (&pp->k, p->x, nl, i0, pr) {
         const int32_t *j = pr.j;
@@ -65,10 +66,16 @@ rhs_lanes_sums(const physics_params *pp, const particles *p, const neighbour_lis
             mean = lane_select(mean < pp->nu_t_cap, mean, lane_broadcast(pp->nu_t_cap));
             mu_eff += pp->rho0 * mean;
         }
-        /* the viscous term's velocity: a fluid neighbour's is its own (u_wall = u,
-           solver_update_eos and tank_bounce_back), so u_wall is read only in blocks whose rows
-           reach a ghost: the same values, DIM loads a pair fewer elsewhere */
-        lane_vec uw_ji = lane_vec_sub(ghosts ? lane_vec_gather(p->u_wall, j) : uj, uwi);
+        /* the viscous term's velocity (particle_viscous_velocity): a fluid or halo
+           neighbour's own, a wall image's u_wall, looked for only in blocks whose rows reach
+           a ghost */
+        lane_vec uwj = uj;
+        if (ghosts)
+            for (int l = 0; l < LANES; l++)
+                if ((size_t)j[l] >= images)
+                    for (int d = 0; d < DIM; d++)
+                        uwj.c[d][l] = p->u_wall[d][(size_t)j[l] - p->n_fluid];
+        lane_vec uw_ji = lane_vec_sub(uwj, ui);
         lane_real pi_ij = lane_vec_dot(uw_ji, r_ji) / r2;
         force = lane_vec_add_where(within, force,
                                    lane_vec_scale(r_ji, VISCOSITY_K * mu_eff * pi_ij * f * vj));

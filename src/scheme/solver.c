@@ -155,7 +155,6 @@ void solver_update_eos(solver *s)
     for (size_t i = 0; i < particles_images_begin(p); i++) {
         p->p[i] = eos_pressure(p->rho[i], rho0, c0);
         p->vol[i] = p->m[i] / p->rho[i];
-        for (int d = 0; d < DIM; d++) p->u_wall[d][i] = p->u[d][i];
     }
 }
 

@@ -162,7 +162,7 @@ tank_frame solver_frame(const solver *s, double t);
 void solver_diagnostics(solver *s, diagnostics *out);
 /* health_check of the state at s->t within the tank and numerics.density_bound. */
 int solver_health(const solver *s, char *msg, size_t msg_len);
-/* p and V = m/rho (the linear EOS) and u_wall = u of the fluid and the halo. */
+/* p and V = m/rho (the linear EOS) of the fluid and the halo. */
 void solver_update_eos(solver *s);
 
 #endif
