@@ -55,8 +55,9 @@ void tank_refresh_ghosts(const tank *t, particles *p, const tank_frame *frame, d
                          double c0);
 
 /* Per-step fields of the ghosts from their sources: eddy viscosity, diffusion coefficient and
- * S_F flag copied, shifting and volume-correction velocities mirrored (free slip): the fields
- * marked FIELD_GHOST_COPY and FIELD_GHOST_MIRROR in core/particles.h; density gradient
+ * S_F flag copied, the shifting velocity mirrored (free slip): the fields marked
+ * FIELD_GHOST_COPY and FIELD_GHOST_MIRROR in core/particles.h (the volume correction's velocity
+ * no image holds: particle_source_vector reads it through the image); density gradient
  * = mirror of the source's dynamic part plus the hydrostatic gradient rho f_i / c0^2, consistent
  * with the hydrostatic continuation above. */
 void tank_mirror_step_fields(particles *p, const tank_frame *frame, double c0);

@@ -69,14 +69,13 @@ enum {
            "the local volume error eps_Vi^(1) of Eq. (12), computed for the snapshots")            \
     SCALAR(double, diff_m, FIELD_SOURCES_ONLY, NULL, "mass diffusion D^m of Eq. (5) (fluid)")      \
     VECTOR(double, shift, FIELD_GHOST_MIRROR, "shifting", "shifting velocity delta-u, Eq. (7)")    \
-    VECTOR(double, correction, FIELD_GHOST_MIRROR, NULL,                                           \
-           "the geometric volume correction's velocity (zero without it; ghosts: mirrored), "      \
+    VECTOR(double, correction, FIELD_SOURCES_ONLY, NULL,                                           \
+           "the geometric volume correction's velocity (zero without it), "                        \
            "scheme/volume_correction.h")                                                           \
     SCALAR(double, diff_rho, FIELD_SOURCES_ONLY, NULL,                                             \
            "density diffusion D^rho of Eq. (5) (fluid)")                                           \
     /* surface tension, with fluid.surface_tension > 0 only (scheme/surface_tension.h) */          \
-    SCALAR(double, interface, 0, NULL,                                                             \
-           "interface function delta_Sigma, 1/m (ghosts: their source's)")                         \
+    SCALAR(double, interface, FIELD_SOURCES_ONLY, NULL, "interface function delta_Sigma, 1/m")     \
     SCALAR(double, curvature, FIELD_SURFACE_TENSION | FIELD_SOURCES_ONLY, "curvature",             \
            "kappa, 1/m (fluid)")                                                                   \
     VECTOR(double, st_force, FIELD_SOURCES_ONLY, NULL,                                             \
@@ -179,6 +178,27 @@ static inline vec ghost_map_point(const ghost_map *m, vec x)
     vec r = ghost_map_vector(m, x);
     for (int d = 0; d < DIM; d++) r.c[d] += m->b[d];
     return r;
+}
+
+/* The particle whose entry of a FIELD_SOURCES_ONLY field stands for particle j: j itself (the
+ * fluid, an MPI run's halo), or a wall image's source. */
+static inline size_t particle_source_of(const particles *p, size_t j)
+{
+    return j < particles_images_begin(p) ? j : (size_t)p->ghost_source[j - p->n_fluid];
+}
+
+/* A field that no wall image holds, at particle j as an image would hold it: a scalar is its
+ * source's, a vector its source's mirrored by the image's map (what tank_mirror_step_fields
+ * copies into the fields the images do hold). */
+static inline double particle_source_scalar(const particles *p, const double *a, size_t j)
+{
+    return a[particle_source_of(p, j)];
+}
+
+static inline vec particle_source_vector(const particles *p, double *const a[DIM], size_t j)
+{
+    vec v = vec_load(a, particle_source_of(p, j));
+    return j < particles_images_begin(p) ? v : ghost_map_vector(particle_ghost_map(p, j), v);
 }
 
 /* Whether particle j is the image of a fluid particle across a wall. */

@@ -59,27 +59,30 @@ double volume_free_surface_packing(const particles *p, double cell_volume, doubl
     return reducer_sum(r, scratch, p->n_fluid) / n_all;
 }
 
-/* Eq. (13) of particle i with the velocity field v: Vgeo_i^2 sum_j v_ji . grad_i W_ij */
+/* Eq. (13) of particle i with the velocity field v: Vgeo_i^2 sum_j v_ji . grad_i W_ij. A wall's
+ * image has its own v where the images hold the field (`held`), else its source's, mirrored. */
 static double geometric_volume_rate(const kernel *k, const particles *p, const neighbour_list *nl,
-                                    double *const v[DIM], size_t i)
+                                    double *const v[DIM], bool held, size_t i)
 {
     vec xi = vec_load(p->x, i), vi = vec_load(v, i);
     double sum = 0.0;
     pair pr;
     FOR_EACH_PAIR (k, p->x, nl, i, xi, pr) {
-        sum += vec_dot(vec_sub(vec_load(v, pr.j), vi), pr.r_ji) * pr.f;
+        vec vj = held ? vec_load(v, pr.j) : particle_source_vector(p, v, pr.j);
+        sum += vec_dot(vec_sub(vj, vi), pr.r_ji) * pr.f;
     }
     double vgeo = 1.0 / p->kernel_sum[i];
     return vgeo * vgeo * sum;
 }
 
 static double interior_rate(const kernel *k, const particles *p, const neighbour_list *nl,
-                            double *const v[DIM], double v0, double *scratch, const reducer *r)
+                            double *const v[DIM], bool held, double v0, double *scratch,
+                            const reducer *r)
 {
 #pragma omp parallel for schedule(static)
     for (size_t i = 0; i < p->n_fluid; i++)
         scratch[i] =
-            p->surface[i] == SURFACE_INTERIOR ? geometric_volume_rate(k, p, nl, v, i) : 0.0;
+            p->surface[i] == SURFACE_INTERIOR ? geometric_volume_rate(k, p, nl, v, held, i) : 0.0;
     return reducer_sum(r, scratch, p->n_fluid) / v0;
 }
 
@@ -87,9 +90,10 @@ void volume_rate(const kernel *k, const particles *p, const neighbour_list *nl, 
                  double *scratch, const reducer *r, volume_rates *out)
 {
     double v0 = (double)reducer_total(r, (long)p->n_fluid) * cell_volume;
-    out->u = interior_rate(k, p, nl, p->u, v0, scratch, r);
-    out->shift = interior_rate(k, p, nl, p->shift, v0, scratch, r);
-    out->correction = interior_rate(k, p, nl, p->correction, v0, scratch, r);
+    /* the images hold u and the shifting, not the correction (FIELD_SOURCES_ONLY) */
+    out->u = interior_rate(k, p, nl, p->u, true, v0, scratch, r);
+    out->shift = interior_rate(k, p, nl, p->shift, true, v0, scratch, r);
+    out->correction = interior_rate(k, p, nl, p->correction, false, v0, scratch, r);
 }
 
 /* The rule of raster_params_default with the lattice's particle volume and spacing. */

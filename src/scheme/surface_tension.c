@@ -69,25 +69,6 @@ void surface_tension_free(surface_tension_work *w)
     memset(w, 0, sizeof *w);
 }
 
-/* A work array's value at neighbour j, a fluid or halo particle or a wall's image: an image
- * reads its source's entry (surface_tension_work), a vector mirrored by the image's map, the
- * values a copy into the images would hold. */
-static inline size_t source_of(const particles *p, size_t j)
-{
-    return j < particles_images_begin(p) ? j : (size_t)p->ghost_source[j - p->n_fluid];
-}
-
-static inline double work_scalar(const particles *p, const double *a, size_t j)
-{
-    return a[source_of(p, j)];
-}
-
-static inline vec work_vector(const particles *p, double *const a[DIM], size_t j)
-{
-    vec v = vec_load(a, source_of(p, j));
-    return j < particles_images_begin(p) ? v : ghost_map_vector(particle_ghost_map(p, j), v);
-}
-
 /* In S_F, from the current positions: delta_Sigma = 2 |sum grad W V| / flat_integral
  * (theory §4: the factor 2 because the gas half of the kernel is missing; the calibration
  * makes its integral across a flat lattice surface exactly 1) and the normal
@@ -143,7 +124,7 @@ static void smoothed_normals(const kernel *k, const particles *p, const neighbou
             pair pr;
             FOR_EACH_PAIR (k, p->x, nl, i, xi, pr) {
                 if (p->surface[pr.j] != SURFACE_FREE) continue;
-                sum = vec_axpy(sum, pr.w * p->vol[pr.j], work_vector(p, normal, pr.j));
+                sum = vec_axpy(sum, pr.w * p->vol[pr.j], particle_source_vector(p, normal, pr.j));
             }
         }
         double norm = vec_norm(sum);
@@ -168,7 +149,8 @@ static void surface_curvature(const surface_tension_params *st, const kernel *k,
         pair pr;
         FOR_EACH_PAIR (k, p->x, nl, i, xi, pr) {
             if (p->surface[pr.j] != SURFACE_FREE) continue;
-            curvature_pair(&sums, ni, work_vector(p, normal, pr.j), pr.r_ji, pr.f, p->vol[pr.j]);
+            curvature_pair(&sums, ni, particle_source_vector(p, normal, pr.j), pr.r_ji, pr.f,
+                           p->vol[pr.j]);
         }
         kappa[i] = curvature_value(&sums, DIM, st->dr);
     }
@@ -203,13 +185,14 @@ static void band_force(const surface_tension_params *st, const kernel *k, partic
             double delta = self * p->interface[i] / band_sum[i];
             pair pr;
             FOR_EACH_PAIR (k, p->x, nl, i, xi, pr) {
-                if (p->interface[pr.j] == 0.0) continue;
+                double interface_j = particle_source_scalar(p, p->interface, pr.j);
+                if (interface_j == 0.0) continue;
                 double w = pr.w, wv = w * p->vol[pr.j];
-                delta += w * p->interface[pr.j] * p->vol[pr.j] / work_scalar(p, band_sum, pr.j);
+                delta += w * interface_j * p->vol[pr.j] / particle_source_scalar(p, band_sum, pr.j);
                 if (p->surface[pr.j] != SURFACE_FREE) continue;
                 sum_free += wv;
-                sum_kappa += wv * work_scalar(p, kappa_surface, pr.j);
-                sum_normal = vec_axpy(sum_normal, wv, work_vector(p, smooth, pr.j));
+                sum_kappa += wv * particle_source_scalar(p, kappa_surface, pr.j);
+                sum_normal = vec_axpy(sum_normal, wv, particle_source_vector(p, smooth, pr.j));
             }
             double length = vec_norm(sum_normal);
             if (sum_free > 0.0 && length > 0.0) {
@@ -315,10 +298,9 @@ void surface_tension_compute(const surface_tension_params *st, const kernel *k, 
     bodies_share(d, p, p->interface);
     bodies_share(d, p, w->band_sum);
     for (int c = 0; c < DIM; c++) bodies_share(d, p, w->normal[c]);
-    /* ghosts carry their source's interface function (and, from tank_mirror_step_fields, its
-       S_F flag) and read its mirrored normal (work_vector): the walls continue the surface at
-       a right angle (no contact-angle model, docs/surface-tension.md) */
-    tank_copy_to_ghosts(p, p->interface);
+    /* a wall's image reads its source's interface function and mirrored normals
+       (particle_source_scalar and _vector; its S_F flag from tank_mirror_step_fields): the walls
+       continue the surface at a right angle (no contact-angle model, docs/surface-tension.md) */
     smoothed_normals(k, p, nl, d, w->normal, w->smooth);
     surface_curvature(st, k, p, nl, d, w->smooth, w->kappa);
     band_force(st, k, p, nl, w->smooth, w->kappa, w->band_sum);
