@@ -63,9 +63,10 @@ void DIM_NAME(estimate_run)(const config *cfg, const derived *dv, int threads, r
     double store = ((double)particles_bytes_per_slot() - sources_only - ghosts_only) * capacity +
                    sources_only * n + ghosts_only * ((double)capacity - n);
     /* solver_reserve: y0 and sum (RK_VARS each) and the stored rates (PARTICLE_N_RATED),
-       the masses' three only where they may vary (eta = 1 or the switch), scratch, the order */
+       the masses' three only where they may vary (eta = 1 or the switch), and scratch (the
+       sort's order lies in y0 and sum, idle between steps) */
     double rk = 2.0 * RK_VARS + PARTICLE_N_RATED - (models_params(cfg->scheme).eta ? 0.0 : 3.0);
-    double work = ((rk + 1.0) * sizeof(double) + sizeof(uint32_t)) * n;
+    double work = (rk + 1.0) * sizeof(double) * n;
     /* neighbours_build: a row per fluid particle, sized by the longest row, of 16-bit entries,
        a count and two bases (core/cells.h; a tank whose rows do not fit the 16-bit windows
        takes 32 bits an entry and no bases); at rest a particle has about the lattice points

@@ -74,13 +74,12 @@ int solver_reserve(solver *s, size_t n_fluid)
         s->y0[v] = s->rk_block + (size_t)v * n;
         s->sum[v] = s->rk_block + (size_t)(RK_MASS + v) * n;
     }
+    s->order = (uint32_t *)s->rk_block; /* the sort by cell, before a step */
     for (int d = 0; d < DIM; d++)
         if (grow((void **)&s->k.du[d], n, sizeof(double))) return -1;
     if (grow((void **)&s->k.drho, n, sizeof(double))) return -1;
     if (s->k.dm && grow_mass_arrays(s, n)) return -1;
-    if (grow((void **)&s->scratch, n, sizeof(double)) ||
-        grow((void **)&s->order, n, sizeof(uint32_t)))
-        return -1;
+    if (grow((void **)&s->scratch, n, sizeof(double))) return -1;
     s->work_capacity = n;
     return 0;
 }
@@ -130,7 +129,6 @@ void solver_free(solver *s)
     for (int d = 0; d < DIM; d++) free(s->k.d##name[d]);
     PARTICLE_RATED(FREE_RATE_SCALAR, FREE_RATE_VECTOR)
     free(s->scratch);
-    free(s->order);
     surface_tension_free(&s->st_work);
     bodies_free(&s->bodies);
     volume_correction_free(&s->vc_work);

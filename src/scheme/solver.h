@@ -67,7 +67,8 @@ typedef struct solver {
                              neighbour build borrows it for its copy of the positions */
     rates k;              /* rates of the current stage */
     double *scratch;      /* n_fluid doubles */
-    uint32_t *order;      /* n_fluid sort permutation (32-bit, as the cell grid's items) */
+    uint32_t *order;      /* n_fluid sort permutation (32-bit, as the cell grid's items), used
+                             only between steps: it lies in rk_block */
     size_t work_capacity; /* the fluid particles these arrays hold room for */
 
     double t, dt;   /* time; size of the prepared step */
