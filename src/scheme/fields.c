@@ -52,11 +52,13 @@ void fields_geometry(const physics_params *pp, const tank *t, particles *p,
         vec xi = vec_load(p->x, i), ui = vec_load(p->u, i);
         double rhoi = p->rho[i];
         neighbour_sums s = {mat_zero(), vec_zero(), 0.0, 0.0, vec_zero(), {{0}}};
+        /* a row that reaches no ghost has no wall image to ask for its u_wall */
+        bool ghosts = neighbour_row_has_ghosts(nl, i);
         pair pr;
         FOR_EACH_PAIR (k, p->x, nl, i, xi, pr) {
             size_t j = pr.j;
-            neighbour_sums_add(&s, &pr, pr.w, p->vol[j], p->rho[j] - rhoi,
-                               vec_sub(particle_viscous_velocity(p, j), ui));
+            vec uj = ghosts ? particle_viscous_velocity(p, j) : vec_load(p->u, j);
+            neighbour_sums_add(&s, &pr, pr.w, p->vol[j], p->rho[j] - rhoi, vec_sub(uj, ui));
         }
         double lambda = mat_min_eigenvalue(&s.l);
         p->lambda[i] = lambda;
