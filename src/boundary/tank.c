@@ -94,9 +94,8 @@ int tank_make_ghosts(const tank *t, particles *p, double reach)
                    fluid alone) */
                 if (g == (size_t)INT32_MAX) return -1;
                 if (g + 1 > p->capacity && particles_reserve_images(p, g + 1)) return -1;
-                /* the ghosts' own fields: room for the store's tail, which grows in steps */
                 if (g + 1 - n_fluid > p->ghosts_capacity &&
-                    particles_reserve_ghosts(p, p->capacity - n_fluid))
+                    particles_reserve_ghosts(p, g + 1 - n_fluid))
                     return -1;
                 p->ghost_kind[g - n_fluid] = GHOST_WALL_IMAGE;
                 p->ghost_source[g - n_fluid] = (int32_t)i;

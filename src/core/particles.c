@@ -60,7 +60,10 @@ int particles_reserve(particles *p, size_t capacity)
 int particles_reserve_ghosts(particles *p, size_t n_ghosts)
 {
     if (n_ghosts <= p->ghosts_capacity) return 0;
-    size_t room = grown_to(p->ghosts_capacity, n_ghosts);
+    /* at least the store's tail: ghosts appended one at a time grow the arrays in the store's
+       steps, not from a handful of slots */
+    size_t tail = p->capacity > p->n_fluid ? p->capacity - p->n_fluid : 0;
+    size_t room = grown_to(p->ghosts_capacity, n_ghosts > tail ? n_ghosts : tail);
     if (grow_fields(p, FIELD_GHOSTS_ONLY, p->ghosts_capacity, room)) return -1;
     p->ghosts_capacity = room;
     return 0;

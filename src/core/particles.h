@@ -40,7 +40,7 @@ enum {
     SCALAR(double, rho, FIELD_STATE, "density", "density")                                         \
     SCALAR(double, p, 0, "pressure", "pressure (EOS)")                                             \
     SCALAR(double, m, FIELD_STATE | FIELD_SOURCES_ONLY, "mass",                                    \
-           "mass (a wall's image: its source's, read there)")                                      \
+           "mass (a wall's image has its source's)")                                               \
     SCALAR(double, vol, 0, "volume", "SPH volume m/rho")                                           \
     /* per-step fields, frozen over the RK stages (sec. 2.4); ghosts copy their source's */        \
     VECTOR(double, grad_rho, 0, NULL, "renormalized density gradient <grad rho>^L")                \
@@ -235,9 +235,10 @@ int particles_reserve(particles *p, size_t capacity);
 /* particles_reserve for slots that only wall images will take (from particles_images_begin
  * on): the FIELD_SOURCES_ONLY fields keep their room. */
 int particles_reserve_images(particles *p, size_t capacity);
-/* Room in the FIELD_GHOSTS_ONLY fields for n_ghosts ghosts (the tail's halo and images), and at
- * least particles_grown of what they held, keeping the contents: the ghosts' makers call it as
- * they append (tank_make_ghosts, an MPI run's halo_build). Returns 0 or -1. */
+/* Room in the FIELD_GHOSTS_ONLY fields for n_ghosts ghosts (the tail's halo and images), at
+ * least the store's tail (capacity - n_fluid) and particles_grown of what they held, keeping
+ * the contents: the ghosts' makers call it as they append (tank_make_ghosts, an MPI run's
+ * halo_build). Returns 0 or -1. */
 int particles_reserve_ghosts(particles *p, size_t n_ghosts);
 /* The bytes one particle slot takes in the store (every array of it), and of those the
  * FIELD_SOURCES_ONLY fields' and the FIELD_GHOSTS_ONLY fields'. */
