@@ -88,7 +88,8 @@ static void neighbour_sums(box *b, particles *p, double *sum_w, double *moment)
 {
     neighbour_list nl = {0};
     assert_int_equal(cells_bin(&b->g, p->x, p->n_total), 0);
-    assert_int_equal(neighbours_build(&nl, &b->g, p->x, p->n_fluid, b->cutoff, (cells_room){0}), 0);
+    assert_int_equal(
+        neighbours_build(&nl, &b->g, p->x, p->n_fluid, b->cutoff, 0.0, (cells_room){0}), 0);
     for (size_t i = 0; i < p->n_fluid; i++) {
         vec xi = vec_load(p->x, i);
         double w_sum = kernel_w(&b->k, 0.0), m = 0.0;

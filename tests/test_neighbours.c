@@ -56,6 +56,47 @@ static void scatter(particles *p, size_t n, unsigned seed)
     p->n_fluid = p->n_total = n;
 }
 
+/* The rows in two parts (cells.h) with the kernel's support at 0.6 radius, in each form of the
+ * scan and of the rows: the first near[i] entries are those of the row in scan order
+ * (`scan_rows`, built with no near part) whose squared distance, added as vec_norm2 adds it,
+ * lies below the support's, and the rest are the others, each part in the scan's order; and
+ * neighbours_near's rows are the near parts. */
+static void check_near_parts(cell_grid *grid, const particles *p, double radius,
+                             const int32_t *scan_rows, size_t cap)
+{
+    double near2 = 0.36 * radius * radius;
+    size_t near_pairs = 0, skin_pairs = 0;
+    for (int form = 0; form < 4; form++) { /* scalar, four, eight lanes, whole rows */
+        neighbour_list nl = {0};
+        lanes_limit(form == 0 ? 0 : form == 1 ? 4 : 8);
+        nl.wide = form == 3;
+        assert_int_equal(
+            neighbours_build(&nl, grid, p->x, p->n_fluid, radius, near2, (cells_room){0}), 0);
+        neighbour_list near = neighbours_near(&nl);
+        int32_t entries[nl.row_capacity], near_entries[nl.row_capacity];
+        for (size_t i = 0; i < p->n_fluid; i++) {
+            const int32_t *row = neighbour_row(&nl, i, entries), *scan = scan_rows + i * cap;
+            int32_t n_near = 0, n_skin = 0;
+            for (int32_t k = 0; k < nl.count[i]; k++) {
+                double r2 = vec_norm2(vec_sub(vec_load(p->x, (size_t)scan[k]), vec_load(p->x, i)));
+                if (r2 < near2)
+                    assert_int_equal(row[n_near++], scan[k]);
+                else
+                    assert_int_equal(row[nl.near[i] + n_skin++], scan[k]);
+            }
+            assert_int_equal(nl.near[i], n_near);
+            assert_int_equal(near.count[i], n_near);
+            const int32_t *near_row = neighbour_row(&near, i, near_entries);
+            for (int32_t k = 0; k < n_near; k++) assert_int_equal(near_row[k], row[k]);
+            near_pairs += (size_t)n_near;
+            skin_pairs += (size_t)n_skin;
+        }
+        neighbours_free(&nl);
+    }
+    lanes_limit(8);
+    assert_true(near_pairs > 0 && skin_pairs > 0); /* both parts tried */
+}
+
 static void check_against_brute_force(size_t n, double radius)
 {
     particles p;
@@ -82,7 +123,7 @@ static void check_against_brute_force(size_t n, double radius)
     /* the scalar form's rows, in their order, for the lane forms to match */
     lanes_limit(0);
     nl.row_capacity = 4; /* force the overflow path */
-    assert_int_equal(neighbours_build(&nl, &grid, p.x, p.n_fluid, radius, (cells_room){0}), 0);
+    assert_int_equal(neighbours_build(&nl, &grid, p.x, p.n_fluid, radius, 0.0, (cells_room){0}), 0);
     size_t cap = nl.row_capacity;
     /* a few thousand particles: every row fits its 16-bit windows (cells.h) */
     assert_false(nl.wide);
@@ -91,7 +132,8 @@ static void check_against_brute_force(size_t n, double radius)
         lanes_limit(width);
         neighbours_free(&nl);
         nl.row_capacity = 4; /* force the overflow path */
-        assert_int_equal(neighbours_build(&nl, &grid, p.x, p.n_fluid, radius, (cells_room){0}), 0);
+        assert_int_equal(neighbours_build(&nl, &grid, p.x, p.n_fluid, radius, 0.0, (cells_room){0}),
+                         0);
         assert_int_equal(nl.row_capacity, cap);
         assert_rows_equal(&nl, scalar_rows, cap);
     }
@@ -99,11 +141,11 @@ static void check_against_brute_force(size_t n, double radius)
     /* the rows kept whole, 32 bits an entry, are the same rows */
     neighbours_free(&nl);
     nl.wide = true;
-    assert_int_equal(neighbours_build(&nl, &grid, p.x, p.n_fluid, radius, (cells_room){0}), 0);
+    assert_int_equal(neighbours_build(&nl, &grid, p.x, p.n_fluid, radius, 0.0, (cells_room){0}), 0);
     assert_true(nl.wide);
     assert_rows_equal(&nl, scalar_rows, cap);
     neighbours_free(&nl);
-    assert_int_equal(neighbours_build(&nl, &grid, p.x, p.n_fluid, radius, (cells_room){0}), 0);
+    assert_int_equal(neighbours_build(&nl, &grid, p.x, p.n_fluid, radius, 0.0, (cells_room){0}), 0);
 
     int32_t *expected = malloc(p.n_total * sizeof *expected);
     int32_t *found = malloc(p.n_total * sizeof *found);
@@ -129,7 +171,7 @@ static void check_against_brute_force(size_t n, double radius)
     for (size_t i = 0; i < p.n_fluid; i++)
         if (nl.count[i] > longest) longest = nl.count[i];
     assert_int_equal(nl.longest, longest);
-    assert_int_equal(neighbours_build(&nl, &grid, p.x, p.n_fluid, radius, (cells_room){0}), 0);
+    assert_int_equal(neighbours_build(&nl, &grid, p.x, p.n_fluid, radius, 0.0, (cells_room){0}), 0);
     assert_int_equal(nl.row_capacity, (size_t)longest + (size_t)longest / 16);
     assert_rows_equal(&nl, scalar_rows, cap);
 
@@ -141,15 +183,16 @@ static void check_against_brute_force(size_t n, double radius)
     assert_int_equal(cells_bin(&grid, p.x, p.n_total), 0);
     size_t room = DIM * p.n_total;
     double *lent = malloc(room * sizeof *lent);
-    assert_int_equal(neighbours_build(&nl, &grid, p.x, p.n_fluid, radius, (cells_room){lent, room}),
-                     0);
+    assert_int_equal(
+        neighbours_build(&nl, &grid, p.x, p.n_fluid, radius, 0.0, (cells_room){lent, room}), 0);
     assert_rows_equal(&nl, scalar_rows, cap);
     assert_null(grid.own_xs);
     for (int d = 0; d < DIM; d++) assert_null(grid.xs[d]);
     assert_int_equal(
-        neighbours_build(&nl, &grid, p.x, p.n_fluid, radius, (cells_room){lent, room - 1}), 0);
+        neighbours_build(&nl, &grid, p.x, p.n_fluid, radius, 0.0, (cells_room){lent, room - 1}), 0);
     assert_rows_equal(&nl, scalar_rows, cap);
     assert_non_null(grid.own_xs);
+    check_near_parts(&grid, &p, radius, scalar_rows, cap);
     free(lent);
     free(scalar_rows);
     free(expected);
@@ -197,7 +240,7 @@ static void test_rows_beyond_window(void **state)
     assert_int_equal(cells_bin(&grid, p.x, n), 0);
     neighbour_list nl = {0};
     for (int build = 0; build < 2; build++) {
-        assert_int_equal(neighbours_build(&nl, &grid, p.x, n, radius, (cells_room){0}), 0);
+        assert_int_equal(neighbours_build(&nl, &grid, p.x, n, radius, 0.0, (cells_room){0}), 0);
         assert_true(nl.wide);
         int32_t entries[nl.row_capacity];
         const int32_t *row = neighbour_row(&nl, 0, entries);

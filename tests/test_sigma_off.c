@@ -14,8 +14,10 @@
  * (src/physics/shifting.h, src/scheme/fields.*, src/scheme/volume_correction.c; the energy
  * budget's work_moves of the same change does not touch the state), and a sixth time when
  * boxes shorter than 256 cells got narrower strips of cells (src/core/cells.c alone: the
- * particles' order, and so the sums' order, moved by round-off). Each line is one particle,
- * in C's exact %a notation. */
+ * particles' order, and so the sums' order, moved by round-off), and a seventh time when the
+ * neighbour rows began to list the pairs within 2h first (src/core/cells*, the callers of
+ * neighbours_build and neighbours_near: the sums' order at RK4's later stages moved by
+ * round-off, 2e-9 of a value at most). Each line is one particle, in C's exact %a notation. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>

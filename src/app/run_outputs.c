@@ -228,7 +228,9 @@ void run_write_loads_row(run *r)
     solver *s = &r->s;
     tank_loads l;
     tank_frame frame = solver_frame(s, s->t);
-    if (loads_compute(&s->pp, &s->p, &s->nl, &frame, solver_reducer(s), &l)) {
+    /* after solver_prepare: the particles are where the lists were built (core/cells.h) */
+    neighbour_list near = neighbours_near(&s->nl);
+    if (loads_compute(&s->pp, &s->p, &near, &frame, solver_reducer(s), &l)) {
         log_error("vcsph: loads: out of memory; loads.csv misses t = %.9g s", s->t);
         return;
     }
@@ -304,7 +306,8 @@ void run_write_series_row(run *r, int with_geometry)
     csv_put(c, s->work_st);
     if (with_geometry) {
         volume_rates rate;
-        volume_rate(&s->pp.k, &s->p, &s->nl, s->dv.cell_volume, s->scratch, solver_reducer(s),
+        neighbour_list near = neighbours_near(&s->nl); /* after solver_prepare, as the loads */
+        volume_rate(&s->pp.k, &s->p, &near, s->dv.cell_volume, s->scratch, solver_reducer(s),
                     &rate);
         csv_put(c, rate.u);
         csv_put(c, rate.shift);

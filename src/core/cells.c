@@ -121,16 +121,16 @@ void cells_sort_order(const cell_grid *g, size_t n, uint32_t *order)
 void neighbours_free(neighbour_list *nl)
 {
     free(nl->count);
+    free(nl->near);
     free(nl->packed);
     free(nl->base);
     free(nl->index);
     memset(nl, 0, sizeof *nl);
 }
 
-/* Scans the 3^DIM cells around particle i in a fixed order; returns how many neighbours it
- * found (it stores at most `cap` of them). */
-static int32_t scan_neighbours(const cell_grid *g, double *const x[DIM], size_t i, double r2max,
-                               int32_t *row, int32_t cap, cells_scan_fn scan)
+/* Scans the 3^DIM cells around particle i in a fixed order into the row's two parts. */
+static void scan_neighbours(const cell_grid *g, double *const x[DIM], size_t i, scan_row *row,
+                            cells_scan_fn scan)
 {
     int c0[DIM], lo[DIM], hi[DIM];
     for (int d = 0; d < DIM; d++) {
@@ -139,7 +139,6 @@ static int32_t scan_neighbours(const cell_grid *g, double *const x[DIM], size_t 
         hi[d] = c0[d] < g->n[d] - 1 ? c0[d] + 1 : g->n[d] - 1;
     }
     vec xi = vec_load(x, i);
-    int32_t found = 0;
     int c[DIM];
 #if DIM == 3
     for (c[2] = lo[2]; c[2] <= hi[2]; c[2]++)
@@ -154,10 +153,9 @@ static int32_t scan_neighbours(const cell_grid *g, double *const x[DIM], size_t 
                 size_t first = g->start[cell_index(g, c)];
                 c[0] = to;
                 size_t last = g->start[cell_index(g, c) + 1];
-                found = scan(g, first, last, xi, (uint32_t)i, r2max, row, found, cap);
+                scan(g, first, last, xi, (uint32_t)i, row);
                 from = to + 1;
             }
-    return found;
 }
 
 /* Row `row` (count entries) in 16 bits (neighbour_list): packed[] and its two windows' bases;
@@ -199,6 +197,9 @@ static int reserve_rows(neighbour_list *nl, size_t n_rows)
         int32_t *base = realloc(nl->base, 2 * n_rows * sizeof *base);
         if (!base) return -1;
         nl->base = base;
+        int32_t *near = realloc(nl->near, n_rows * sizeof *near);
+        if (!near) return -1;
+        nl->near = near;
         nl->capacity_rows = n_rows;
     }
     size_t need = (n_rows ? n_rows : 1) * nl->row_capacity;
@@ -236,9 +237,24 @@ static int place_positions(cell_grid *g, size_t binned, cells_room lent)
     return 0;
 }
 
+/* Particle i's row, scanned into its two parts, laid out whole in `row` (room for cap
+ * entries): the near part, then the skin. Returns the row's count, which may exceed cap (then
+ * the row is not whole and the build is redone). */
+static int32_t row_of(const cell_grid *g, double *const x[DIM], size_t i, scan_row *parts,
+                      int32_t *row, cells_scan_fn scan)
+{
+    parts->near = row;
+    parts->n_near = parts->n_skin = 0;
+    scan_neighbours(g, x, i, parts, scan);
+    int32_t count = parts->n_near + parts->n_skin;
+    if (count <= parts->cap)
+        memcpy(row + parts->n_near, parts->skin, (size_t)parts->n_skin * sizeof *row);
+    return count;
+}
+
 /* neighbours_build's rows, from the positions' copy in g->xs. */
 static int build_rows(neighbour_list *nl, const cell_grid *g, double *const x[DIM], size_t n_rows,
-                      double radius)
+                      double radius, double near2)
 {
     double r2max = radius * radius;
     cells_scan_fn scan = cells_scan_form();
@@ -257,16 +273,19 @@ static int build_rows(neighbour_list *nl, const cell_grid *g, double *const x[DI
         bool misfit = false;
 #pragma omp parallel reduction(max : most) reduction(|| : misfit)
         {
-            int32_t scanned[nl->wide ? 1 : cap]; /* a row before it is packed */
+            int32_t scanned[nl->wide ? 1 : cap], skin[cap]; /* a row before it is packed */
+            scan_row parts = {
+                .skin = skin, .cap = cap, .r2max = r2max, .near2 = near2 < r2max ? near2 : r2max};
 #pragma omp for schedule(static)
             for (size_t i = 0; i < n_rows; i++) {
                 size_t at = i * (size_t)cap;
                 int32_t *row = nl->wide ? nl->index + at : scanned;
-                int32_t k = scan_neighbours(g, x, i, r2max, row, cap, scan);
+                int32_t k = row_of(g, x, i, &parts, row, scan);
                 if (!nl->wide && k <= cap &&
                     !pack_row(row, k, (int32_t)n_rows, nl->packed + at, nl->base + 2 * i))
                     misfit = true;
                 nl->count[i] = k;
+                nl->near[i] = parts.n_near;
                 if (k > most) most = k;
             }
         }
@@ -279,7 +298,7 @@ static int build_rows(neighbour_list *nl, const cell_grid *g, double *const x[DI
 }
 
 int neighbours_build(neighbour_list *nl, cell_grid *g, double *const x[DIM], size_t n_rows,
-                     double radius, cells_room lent)
+                     double radius, double near2, cells_room lent)
 {
     size_t binned = g->start[g->n_cells];
     /* the binned positions in item order, which the scan reads a block at a time */
@@ -287,7 +306,7 @@ int neighbours_build(neighbour_list *nl, cell_grid *g, double *const x[DIM], siz
 #pragma omp parallel for schedule(static)
     for (size_t m = 0; m < binned; m++)
         for (int d = 0; d < DIM; d++) g->xs[d][m] = x[d][g->item[m]];
-    int status = build_rows(nl, g, x, n_rows, radius);
+    int status = build_rows(nl, g, x, n_rows, radius, near2);
     for (int d = 0; d < DIM; d++) g->xs[d] = NULL; /* the lent room goes back to its owner */
     return status;
 }

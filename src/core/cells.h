@@ -32,8 +32,13 @@ typedef struct {
     size_t doubles;
 } cells_room;
 
-/* Neighbour lists: row i holds the indices j != i within `radius` of i, in the fixed order of
- * the cell scan (so every sum over them is the same for any number of threads). A row is kept
+/* Neighbour lists: row i holds the indices j != i within `radius` of i, in a fixed order (so
+ * every sum over them is the same for any number of threads): first the near[i] within the
+ * kernel's support at the positions of the build, then the skin, those beyond it, each part in
+ * the order of the cell scan. A pass at those positions (the step's preparation and the first
+ * stage of RK4: no pass moves a particle) has all its pairs within 2h in the near part and
+ * reads only that part (neighbours_near); once the particles have moved, a pair of the skin may
+ * come within 2h, and the whole row is read. A row is kept
  * in 16 bits an entry: j = base[2 i + w] + e, with e < NEIGHBOUR_WINDOW, in one of two windows
  * w (the entry's top bit): the fluid (j < n_rows) and the ghosts after it (the walls' images
  * and an MPI halo at the store's tail, far from the fluid in index but close to one another).
@@ -45,6 +50,7 @@ typedef struct {
 typedef struct {
     size_t n_rows, row_capacity, capacity_rows, index_capacity;
     int32_t *count;
+    int32_t *near;    /* n_rows: the entries of each row within the support at the build */
     uint16_t *packed; /* n_rows x row_capacity entries; unless wide */
     int32_t *base;    /* n_rows x 2: each row's windows' first indices; unless wide */
     int32_t *index;   /* n_rows x row_capacity indices; when wide */
@@ -65,6 +71,16 @@ static inline const int32_t *neighbour_row(const neighbour_list *nl, size_t i, i
     for (int32_t n = 0; n < count; n++)
         entries[n] = (e[n] >= NEIGHBOUR_WINDOW ? ghosts - NEIGHBOUR_WINDOW : fluid) + e[n];
     return entries;
+}
+
+/* The list whose rows are the near parts of nl's (a view: the same arrays, nothing of its own
+ * to free), for the pair loops at the positions of the build: the same pairs within 2h in the
+ * same order as the whole rows give there, without the skin's, which add exactly zero. */
+static inline neighbour_list neighbours_near(const neighbour_list *nl)
+{
+    neighbour_list near = *nl;
+    near.count = nl->near;
+    return near;
 }
 
 /* Whether row i may hold a ghost (a wall's image or a halo particle): the packed form's ghost
@@ -135,10 +151,12 @@ static inline size_t neighbours_row_room(int32_t longest)
     return (size_t)longest + (size_t)longest / 16;
 }
 /* Lists, for each of the first n_rows particles, its neighbours within `radius` among all the
- * binned particles; the positions' copy goes into `lent` where it is large enough (cells_room;
+ * binned particles, those at a squared distance below near2 first (the kernel's support2;
+ * the squared distance added as vec_norm2 adds it, so a pair loop finds the same near pairs
+ * to the bit); the positions' copy goes into `lent` where it is large enough (cells_room;
  * (cells_room){0}: the grid's own). Returns 0, or -1 when out of memory. */
 int neighbours_build(neighbour_list *nl, cell_grid *g, double *const x[DIM], size_t n_rows,
-                     double radius, cells_room lent);
+                     double radius, double near2, cells_room lent);
 void neighbours_free(neighbour_list *nl);
 
 #endif

@@ -68,12 +68,12 @@ void DIM_NAME(estimate_run)(const config *cfg, const derived *dv, int threads, r
     double rk = 2.0 * RK_VARS + PARTICLE_N_RATED - (models_params(cfg->scheme).eta ? 0.0 : 3.0);
     double work = (rk + 1.0) * sizeof(double) * n;
     /* neighbours_build: a row per fluid particle, sized by the longest row, of 16-bit entries,
-       a count and two bases (core/cells.h; a tank whose rows do not fit the 16-bit windows
-       takes 32 bits an entry and no bases); at rest a particle has about the lattice points
-       of the ball of radius reach */
+       a count, the near part's count and two bases (core/cells.h; a tank whose rows do not
+       fit the 16-bit windows takes 32 bits an entry and no bases); at rest a particle has
+       about the lattice points of the ball of radius reach */
     double ball = DIM == 2 ? M_PI * reach * reach : 4.0 / 3.0 * M_PI * reach * reach * reach;
     double row = (double)neighbours_row_room((int32_t)ceil(ball / cell_volume));
-    double lists = (row * sizeof(uint16_t) + 3.0 * sizeof(int32_t)) * n;
+    double lists = (row * sizeof(uint16_t) + 4.0 * sizeof(int32_t)) * n;
     /* the cell grid: start per cell, item and cell_of per particle; the neighbour build's copy
        of the positions goes into the RK4 arrays y0 and sum (cells_room), which are idle then,
        unless the images outnumber them (never in a tank: 2 RK_MASS / DIM particles a fluid

@@ -66,7 +66,7 @@ static int build_neighbours(solver *s, double dt, const tank_frame *frame)
     tank_refresh_ghosts(&s->tank, p, frame, s->pp.rho0, s->pp.c0);
     if (cells_bin(&s->grid, p->x, p->n_total)) return -1;
     cells_room idle = {s->rk_block, 2 * RK_MASS * s->work_capacity}; /* solver.h */
-    return neighbours_build(&s->nl, &s->grid, p->x, p->n_fluid, cutoff, idle);
+    return neighbours_build(&s->nl, &s->grid, p->x, p->n_fluid, cutoff, s->pp.k.support2, idle);
 }
 
 /* The integrated variables as a set of fields (FIELD_MASK). */
@@ -225,7 +225,9 @@ void solver_advance(solver *s, double t_stop)
                 surface_tension_compute(&s->st, &s->pp.k, p, &s->nl, &s->bodies,
                                         solver_bodies_domain(s), &s->st_work);
         }
-        rhs_compute(&s->pp, p, &s->nl, &frame, s->eta_control.eta, &s->k);
+        /* stage 0 at the positions of the build: its pairs lie in the rows' near parts */
+        neighbour_list near = neighbours_near(&s->nl);
+        rhs_compute(&s->pp, p, stage == 0 ? &near : &s->nl, &frame, s->eta_control.eta, &s->k);
         if (stage == 0) s->max_acc = max_acceleration(s);
         work += stage_w[stage] * input_power(s, &frame);
         if (s->pp.surface_tension)

@@ -23,37 +23,37 @@ typedef struct {
     /* NULL: always; otherwise whether the pass runs for this case and state */
     bool (*active)(const solver *s);
     /* Returns the particles whose state it changed (0: none, the ghosts stay as they are), or
-       -1 when out of memory. */
-    long (*run)(solver *s, const tank_frame *frame);
+       -1 when out of memory. `rows`: the neighbour rows for the particles' positions now. */
+    long (*run)(solver *s, const tank_frame *frame, const neighbour_list *rows);
 } step_pass;
 
-static long geometry(solver *s, const tank_frame *frame)
+static long geometry(solver *s, const tank_frame *frame, const neighbour_list *rows)
 {
     (void)frame;
-    fields_geometry(&s->pp, &s->tank, &s->p, &s->nl);
+    fields_geometry(&s->pp, &s->tank, &s->p, rows);
     return 0;
 }
 
-static long free_surface_test(solver *s, const tank_frame *frame)
+static long free_surface_test(solver *s, const tank_frame *frame, const neighbour_list *rows)
 {
     (void)frame;
-    freesurface_test(&s->pp.k, s->pp.dr, s->pp.normal_reference, &s->p, &s->nl);
+    freesurface_test(&s->pp.k, s->pp.dr, s->pp.normal_reference, &s->p, rows);
     return 0;
 }
 
-static long free_surface_region(solver *s, const tank_frame *frame)
+static long free_surface_region(solver *s, const tank_frame *frame, const neighbour_list *rows)
 {
     (void)frame;
-    freesurface_region(&s->pp.k, &s->p, &s->nl);
+    freesurface_region(&s->pp.k, &s->p, rows);
     return 0;
 }
 
 static bool has_eta_control(const solver *s) { return s->cfg->scheme == SCHEME_DELTA_PLUS_ALE; }
 
 /* eps_V1 of this state decides eta for the step (theory §8) */
-static long eta_control(solver *s, const tank_frame *frame)
+static long eta_control(solver *s, const tank_frame *frame, const neighbour_list *rows)
 {
-    (void)frame;
+    (void)frame, (void)rows;
     volume_errors ve;
     volume_compute(&s->p, s->dv.cell_volume, s->scratch, solver_reducer(s), &ve);
     s->eta_switched = eta_control_update(&s->eta_control, s->t, ve.eps_v1, s->eta_switch_detail,
@@ -61,9 +61,9 @@ static long eta_control(solver *s, const tank_frame *frame)
     return 0;
 }
 
-static long edbc(solver *s, const tank_frame *frame)
+static long edbc(solver *s, const tank_frame *frame, const neighbour_list *rows)
 {
-    (void)frame;
+    (void)frame, (void)rows;
     control_edbc(s);
     return s->n_edbc;
 }
@@ -75,11 +75,11 @@ static bool needs_bodies(const solver *s)
     return s->pp.surface_tension || s->pp.volume_correction;
 }
 
-static long find_bodies(solver *s, const tank_frame *frame)
+static long find_bodies(solver *s, const tank_frame *frame, const neighbour_list *rows)
 {
     (void)frame;
     if (bodies_reserve(&s->bodies, particles_images_begin(&s->p))) return -1;
-    bodies_find(&s->pp.k, &s->p, &s->nl, solver_bodies_domain(s), &s->bodies);
+    bodies_find(&s->pp.k, &s->p, rows, solver_bodies_domain(s), &s->bodies);
     return 0;
 }
 
@@ -87,55 +87,55 @@ static bool corrects(const solver *s) { return s->pp.volume_correction; }
 
 static bool shifts_or_corrects(const solver *s) { return s->pp.shifting || corrects(s); }
 
-static long shifting_and_correction(solver *s, const tank_frame *frame)
+static long shifting_and_correction(solver *s, const tank_frame *frame, const neighbour_list *rows)
 {
     (void)frame;
     /* the walls' images read e here, after the driver has brought the halo's e up to date */
     if (corrects(s)) volume_correction_ghost_mismatch(&s->p);
-    fields_shifting_and_correction(&s->pp, &s->p, &s->nl, s->pp.shifting, corrects(s));
+    fields_shifting_and_correction(&s->pp, &s->p, rows, s->pp.shifting, corrects(s));
     return 0;
 }
 
-static long correction_mismatch(solver *s, const tank_frame *frame)
+static long correction_mismatch(solver *s, const tank_frame *frame, const neighbour_list *rows)
 {
-    (void)frame;
+    (void)frame, (void)rows;
     volume_correction_mismatch(&s->pp, &s->p);
     return 0;
 }
 
-static long correction_band(solver *s, const tank_frame *frame)
+static long correction_band(solver *s, const tank_frame *frame, const neighbour_list *rows)
 {
     (void)frame;
-    volume_correction_band(&s->pp, &s->p, &s->nl);
+    volume_correction_band(&s->pp, &s->p, rows);
     return 0;
 }
 
-static long correction_per_body(solver *s, const tank_frame *frame)
+static long correction_per_body(solver *s, const tank_frame *frame, const neighbour_list *rows)
 {
-    (void)frame;
+    (void)frame, (void)rows;
     return volume_correction_per_body(&s->p, &s->bodies, solver_bodies_domain(s), &s->vc_work) ? -1
                                                                                                : 0;
 }
 
-static long bounce_back(solver *s, const tank_frame *frame)
+static long bounce_back(solver *s, const tank_frame *frame, const neighbour_list *rows)
 {
-    (void)frame;
+    (void)frame, (void)rows;
     return (long)tank_bounce_back(&s->tank, &s->p, s->dv.dr, s->dt);
 }
 
-static long frozen_terms(solver *s, const tank_frame *frame)
+static long frozen_terms(solver *s, const tank_frame *frame, const neighbour_list *rows)
 {
-    fields_frozen_terms(&s->pp, &s->p, &s->nl, frame, s->eta_control.eta > 0.0, s->dt);
+    fields_frozen_terms(&s->pp, &s->p, rows, frame, s->eta_control.eta > 0.0, s->dt);
     return 0;
 }
 
 /* the force of stage 0, and room for the other stages' */
-static long surface_tension(solver *s, const tank_frame *frame)
+static long surface_tension(solver *s, const tank_frame *frame, const neighbour_list *rows)
 {
     (void)frame;
     if (surface_tension_reserve(&s->st_work, particles_images_begin(&s->p), s->bodies.count))
         return -1;
-    surface_tension_compute(&s->st, &s->pp.k, &s->p, &s->nl, &s->bodies, solver_bodies_domain(s),
+    surface_tension_compute(&s->st, &s->pp.k, &s->p, rows, &s->bodies, solver_bodies_domain(s),
                             &s->st_work);
     return 0;
 }
@@ -199,12 +199,18 @@ int passes_prepare(solver *s, const tank_frame *frame)
     /* fields changed since the halo (every field a pass wrote: the same on every process)
        and the walls' images (the state a pass changed here) were last refreshed */
     uint64_t halo_stale = 0, ghost_stale = 0;
+    /* the particles are where the lists were built, and so each row's pairs within 2h are its
+       near part (core/cells.h), until a pass moves them: none does (none writes x), and one
+       that did would hand the passes after it the whole rows */
+    neighbour_list near = neighbours_near(&s->nl);
+    const neighbour_list *rows = &near;
     for (size_t k = 0; k < sizeof prepare_passes / sizeof prepare_passes[0]; k++) {
         const step_pass *pass = &prepare_passes[k];
         if (pass->active && !pass->active(s)) continue;
         refresh_for(s, frame, pass->reads, &halo_stale, &ghost_stale);
-        long changed = pass->run(s, frame);
+        long changed = pass->run(s, frame, rows);
         if (changed < 0) return -1;
+        if (pass->writes & F(x)) rows = &s->nl;
         halo_stale |= pass->writes;
         if (changed > 0) ghost_stale |= pass->writes & GHOST_STATE;
     }
