@@ -128,9 +128,9 @@ void neighbours_free(neighbour_list *nl)
     memset(nl, 0, sizeof *nl);
 }
 
-/* Scans the 3^DIM cells around particle i in a fixed order into the row's two parts. */
-static void scan_neighbours(const cell_grid *g, double *const x[DIM], size_t i, scan_row *row,
-                            cells_scan_fn scan)
+/* Scans the 3^DIM cells around particle i in a fixed order into the row. */
+static void scan_neighbours(const cell_grid *g, double *const x[DIM], size_t i, double r2max,
+                            scan_row *row, cells_scan_fn scan)
 {
     int c0[DIM], lo[DIM], hi[DIM];
     for (int d = 0; d < DIM; d++) {
@@ -153,7 +153,7 @@ static void scan_neighbours(const cell_grid *g, double *const x[DIM], size_t i, 
                 size_t first = g->start[cell_index(g, c)];
                 c[0] = to;
                 size_t last = g->start[cell_index(g, c) + 1];
-                scan(g, first, last, xi, (uint32_t)i, row);
+                scan(g, first, last, xi, (uint32_t)i, r2max, row);
                 from = to + 1;
             }
 }
@@ -237,19 +237,20 @@ static int place_positions(cell_grid *g, size_t binned, cells_room lent)
     return 0;
 }
 
-/* Particle i's row, scanned into its two parts, laid out whole in `row` (room for cap
- * entries): the near part, then the skin. Returns the row's count, which may exceed cap (then
- * the row is not whole and the build is redone). */
-static int32_t row_of(const cell_grid *g, double *const x[DIM], size_t i, scan_row *parts,
-                      int32_t *row, cells_scan_fn scan)
+/* Particle i's row into `row` (room for cap + CELLS_SPLIT_SLACK entries): the neighbours
+ * within the kernel's support (squared distance below near2) first, then the skin, each part
+ * in the scan's order (cells_split_fn), with the near part's count in *near. Returns the
+ * row's count, which may exceed cap (then the row is not whole and the build is redone).
+ * `scanned` is room for the scan's row and its squared distances, `skin` for the split. */
+static int32_t row_of(const cell_grid *g, double *const x[DIM], size_t i, double r2max,
+                      double near2, scan_row scanned, int32_t *row, int32_t *skin, int32_t *near,
+                      cells_scan_fn scan, cells_split_fn split)
 {
-    parts->near = row;
-    parts->n_near = parts->n_skin = 0;
-    scan_neighbours(g, x, i, parts, scan);
-    int32_t count = parts->n_near + parts->n_skin;
-    if (count <= parts->cap)
-        memcpy(row + parts->n_near, parts->skin, (size_t)parts->n_skin * sizeof *row);
-    return count;
+    scanned.found = 0;
+    scan_neighbours(g, x, i, r2max, &scanned, scan);
+    if (scanned.found <= scanned.cap)
+        *near = split(scanned.entries, scanned.r2, scanned.found, near2, row, skin);
+    return scanned.found;
 }
 
 /* neighbours_build's rows, from the positions' copy in g->xs. */
@@ -258,6 +259,7 @@ static int build_rows(neighbour_list *nl, const cell_grid *g, double *const x[DI
 {
     double r2max = radius * radius;
     cells_scan_fn scan = cells_scan_form();
+    cells_split_fn split = cells_split_form();
     nl->radius = radius;
     nl->n_rows = n_rows;
     /* rows sized by the last build's longest (neighbour counts change little from step to
@@ -273,19 +275,22 @@ static int build_rows(neighbour_list *nl, const cell_grid *g, double *const x[DI
         bool misfit = false;
 #pragma omp parallel reduction(max : most) reduction(|| : misfit)
         {
-            int32_t scanned[nl->wide ? 1 : cap], skin[cap]; /* a row before it is packed */
-            scan_row parts = {
-                .skin = skin, .cap = cap, .r2max = r2max, .near2 = near2 < r2max ? near2 : r2max};
+            /* the scan's row and distances, the room of the split, and the row laid out */
+            int32_t entries[cap], skin[cap + CELLS_SPLIT_SLACK], row[cap + CELLS_SPLIT_SLACK];
+            double r2[cap];
+            scan_row scanned = {.entries = entries, .r2 = r2, .cap = cap};
 #pragma omp for schedule(static)
             for (size_t i = 0; i < n_rows; i++) {
                 size_t at = i * (size_t)cap;
-                int32_t *row = nl->wide ? nl->index + at : scanned;
-                int32_t k = row_of(g, x, i, &parts, row, scan);
-                if (!nl->wide && k <= cap &&
-                    !pack_row(row, k, (int32_t)n_rows, nl->packed + at, nl->base + 2 * i))
-                    misfit = true;
+                int32_t k =
+                    row_of(g, x, i, r2max, near2, scanned, row, skin, nl->near + i, scan, split);
+                if (k <= cap) { /* else the row is not whole, and the build is redone */
+                    if (nl->wide)
+                        memcpy(nl->index + at, row, (size_t)k * sizeof *row);
+                    else if (!pack_row(row, k, (int32_t)n_rows, nl->packed + at, nl->base + 2 * i))
+                        misfit = true;
+                }
                 nl->count[i] = k;
-                nl->near[i] = parts.n_near;
                 if (k > most) most = k;
             }
         }
