@@ -38,7 +38,8 @@ typedef int32_t (*cells_split_fn)(const int32_t *entries, const double *r2, int3
  * order with the same squared distances, added as vec_norm2 adds them (so that a pair loop at
  * the positions of the build finds a pair within 2h where the scan does, to the bit). */
 cells_scan_fn cells_scan_form(void);
-/* The split's form for the processor: eight entries at a time with AVX-512, else one by one. */
+/* The split's form for the processor: eight entries at a time with AVX-512, four with AVX2,
+ * one by one otherwise; all give the same rows. */
 cells_split_fn cells_split_form(void);
 
 #endif
