@@ -18,18 +18,6 @@
 
 #include "disordered_block.h"
 
-#if DIM == 2
-static const char block_case[] = "[case]\nname = block\ndim = 2\nt_end = 1\n"
-                                 "[tank]\nlength = 0.4\nheight = 0.3\n"
-                                 "[liquid]\nheight = 0.2\n[model]\nscheme = delta-plus-ale\n"
-                                 "les = true\n[numerics]\nresolution = 19\n";
-#else
-static const char block_case[] = "[case]\nname = block\ndim = 3\nt_end = 1\n"
-                                 "[tank]\nlength = 0.24\nheight = 0.2\nwidth = 0.12\n"
-                                 "[liquid]\nheight = 0.12\n[model]\nscheme = delta-plus-ale\n"
-                                 "les = true\n[numerics]\nresolution = 11\n";
-#endif
-
 /* rates of n particles, one array per integrated component */
 typedef struct {
     double *data;
@@ -47,11 +35,11 @@ static void rate_arrays_alloc(rate_arrays *a, size_t n)
     PARTICLE_RATED(RATE_ARRAY_SCALAR, RATE_ARRAY_VECTOR)
 }
 
-/* The block of block_case, disordered (disordered_block.h): a particle count that is not a
+/* The block of ALE_BLOCK_CASE, disordered (disordered_block.h): a particle count that is not a
  * multiple of four, so that the scalar tail runs too. */
 static void lanes_block(config *cfg, solver *s)
 {
-    disordered_block(block_case, 0.2, 7, cfg, s);
+    disordered_block(ALE_BLOCK_CASE, 0.2, 7, cfg, s);
     assert_true(s->p.n_fluid % 4 != 0);
 }
 

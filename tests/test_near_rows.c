@@ -18,18 +18,6 @@
 
 #include "disordered_block.h"
 
-#if DIM == 2
-static const char block_case[] = "[case]\nname = block\ndim = 2\nt_end = 1\n"
-                                 "[tank]\nlength = 0.4\nheight = 0.3\n"
-                                 "[liquid]\nheight = 0.2\n[model]\nscheme = delta-plus-ale\n"
-                                 "les = true\n[numerics]\nresolution = 19\n";
-#else
-static const char block_case[] = "[case]\nname = block\ndim = 3\nt_end = 1\n"
-                                 "[tank]\nlength = 0.24\nheight = 0.2\nwidth = 0.12\n"
-                                 "[liquid]\nheight = 0.12\n[model]\nscheme = delta-plus-ale\n"
-                                 "les = true\n[numerics]\nresolution = 11\n";
-#endif
-
 /* The fluid's fields the passes below write */
 // clang-format off
 #define PASS_FIELDS(SCALAR, VECTOR)                                                                \
@@ -74,7 +62,7 @@ static void near_rows_give_the_whole_rows_bits(int width)
     if (lanes_width() != width) skip();
     config cfg;
     solver s;
-    disordered_block(block_case, 0.2, 7, &cfg, &s);
+    disordered_block(ALE_BLOCK_CASE, 0.2, 7, &cfg, &s);
     s.pp.volume_correction = true;
     /* the skin holds pairs: rows beyond their near parts */
     size_t skin = 0;
