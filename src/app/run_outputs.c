@@ -228,9 +228,8 @@ void run_write_loads_row(run *r)
     solver *s = &r->s;
     tank_loads l;
     tank_frame frame = solver_frame(s, s->t);
-    /* after solver_prepare: the particles are where the lists were built (core/cells.h) */
-    neighbour_list near = neighbours_near(&s->nl);
-    if (loads_compute(&s->pp, &s->p, &near, &frame, solver_reducer(s), &l)) {
+    neighbour_list rows = solver_prepared_rows(s); /* a step's outputs follow solver_prepare */
+    if (loads_compute(&s->pp, &s->p, &rows, &frame, solver_reducer(s), &l)) {
         log_error("vcsph: loads: out of memory; loads.csv misses t = %.9g s", s->t);
         return;
     }
@@ -306,8 +305,8 @@ void run_write_series_row(run *r, int with_geometry)
     csv_put(c, s->work_st);
     if (with_geometry) {
         volume_rates rate;
-        neighbour_list near = neighbours_near(&s->nl); /* after solver_prepare, as the loads */
-        volume_rate(&s->pp.k, &s->p, &near, s->dv.cell_volume, s->scratch, solver_reducer(s),
+        neighbour_list rows = solver_prepared_rows(s); /* after solver_prepare, as the loads */
+        volume_rate(&s->pp.k, &s->p, &rows, s->dv.cell_volume, s->scratch, solver_reducer(s),
                     &rate);
         csv_put(c, rate.u);
         csv_put(c, rate.shift);

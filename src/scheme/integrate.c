@@ -225,9 +225,9 @@ void solver_advance(solver *s, double t_stop)
                 surface_tension_compute(&s->st, &s->pp.k, p, &s->nl, &s->bodies,
                                         solver_bodies_domain(s), &s->st_work);
         }
-        /* stage 0 at the positions of the build: its pairs lie in the rows' near parts */
-        neighbour_list near = neighbours_near(&s->nl);
-        rhs_compute(&s->pp, p, stage == 0 ? &near : &s->nl, &frame, s->eta_control.eta, &s->k);
+        /* stage 0 at the positions of the build (solver_prepared_rows) */
+        neighbour_list prepared = solver_prepared_rows(s);
+        rhs_compute(&s->pp, p, stage == 0 ? &prepared : &s->nl, &frame, s->eta_control.eta, &s->k);
         if (stage == 0) s->max_acc = max_acceleration(s);
         work += stage_w[stage] * input_power(s, &frame);
         if (s->pp.surface_tension)

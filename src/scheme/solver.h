@@ -76,6 +76,7 @@ typedef struct solver {
     long step;
     double max_acc;                 /* largest |du/dt| of the last step (dt_a of Eq. 8) */
     double skin;                    /* neighbour-list margin of this step */
+    bool moved_since_build;         /* a pass of the preparation moved particles (none does) */
     double max_displacement;        /* largest move of a particle during the last step */
     double work_in;                 /* integral of the input power -sum m a_tank . u */
     surface_tension_params st;      /* sigma and the calibration of the interface function */
@@ -96,6 +97,15 @@ typedef struct solver {
 static inline bool solver_masses_vary(const solver *s)
 {
     return rhs_masses_vary(&s->pp, s->eta_control.eta);
+}
+
+/* The neighbour rows for a pair loop between solver_prepare and the first stage's move (the
+ * outputs of a step, the first stage's right-hand side): the particles are where the lists
+ * were built, so the rows' near parts hold every pair within 2h (core/cells.h); the whole
+ * rows should a pass of the preparation have moved particles. */
+static inline neighbour_list solver_prepared_rows(const solver *s)
+{
+    return s->moved_since_build ? s->nl : neighbours_near(&s->nl);
 }
 
 /* The global reductions of the run: over every process with a domain, NULL without. */
