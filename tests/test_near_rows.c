@@ -1,10 +1,13 @@
 /* The rows' near parts (core/cells.h) give a pass at the positions of the build the bits of
  * the whole rows: the step's geometry, shifting and correction, frozen terms, the volume rate
  * and the right-hand side of RK4's first stage (in each lane form the processor has), on a
- * disordered block of liquid with random velocities, whose skin holds pairs beyond 2h. */
+ * disordered block of liquid with random velocities, whose skin holds pairs beyond 2h; and
+ * no pass of the step's preparation moves a particle, which is what makes the near parts
+ * valid for them (solver_prepared_rows). */
 #include "core/lanes_switch.h"
 #include "diag/volume.h"
 #include "scheme/fields.h"
+#include "scheme/passes.h"
 #include "scheme/rhs.h"
 #include "scheme/solver.h"
 
@@ -90,6 +93,16 @@ static void test_near_rows(void **state)
     near_rows_give_the_whole_rows_bits(*(const int *)*state);
 }
 
+/* The passes' declared writes (the registry of core/particles.h) leave the positions alone,
+ * and the registry answers: the passes write something. */
+static void test_no_pass_moves_particles(void **state)
+{
+    (void)state;
+    uint64_t writes = passes_prepare_writes();
+    assert_true(writes != 0);
+    assert_false(writes & FIELD_MASK(x));
+}
+
 int main(void)
 {
     static int one = 0, four = 4, eight = 8;
@@ -97,6 +110,7 @@ int main(void)
         {"test_near_rows_scalar", test_near_rows, NULL, NULL, &one},
         {"test_near_rows_in_4_lanes", test_near_rows, NULL, NULL, &four},
         {"test_near_rows_in_8_lanes", test_near_rows, NULL, NULL, &eight},
+        cmocka_unit_test(test_no_pass_moves_particles),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

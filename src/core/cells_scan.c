@@ -31,8 +31,7 @@ static inline void append_bits(const cell_grid *g, size_t m, unsigned within, ui
     }
 }
 
-/* Each form works on a copy of the row's state: the count in a register, not reloaded after
- * every store of an entry (which, as far as the compiler knows, could have changed it). */
+/* The candidates item[m .. last) one by one (a form's last few, or the scalar form's all). */
 static inline void scan_tail(const cell_grid *g, size_t m, size_t last, vec xi, uint32_t self,
                              double r2max, scan_row *row)
 {
@@ -48,6 +47,8 @@ static inline void scan_tail(const cell_grid *g, size_t m, size_t last, vec xi, 
     }
 }
 
+/* Each form works on a copy of the row's state: the count in a register, not reloaded after
+ * every store of an entry (which, as far as the compiler knows, could have changed it). */
 static void scan_scalar(const cell_grid *g, size_t first, size_t last, vec xi, uint32_t self,
                         double r2max, scan_row *into)
 {

@@ -199,25 +199,25 @@ int passes_prepare(solver *s, const tank_frame *frame)
     /* fields changed since the halo (every field a pass wrote: the same on every process)
        and the walls' images (the state a pass changed here) were last refreshed */
     uint64_t halo_stale = 0, ghost_stale = 0;
-    /* the particles are where the lists were built, and so each row's pairs within 2h are its
-       near part (core/cells.h), until a pass moves them: none does (none writes x), and one
-       that did would hand the passes after it, and the first stage, the whole rows */
-    s->moved_since_build = false;
-    neighbour_list rows = solver_prepared_rows(s);
+    neighbour_list rows = solver_prepared_rows(s); /* no pass moves a particle */
     for (size_t k = 0; k < sizeof prepare_passes / sizeof prepare_passes[0]; k++) {
         const step_pass *pass = &prepare_passes[k];
         if (pass->active && !pass->active(s)) continue;
         refresh_for(s, frame, pass->reads, &halo_stale, &ghost_stale);
         long changed = pass->run(s, frame, &rows);
         if (changed < 0) return -1;
-        if (pass->writes & F(x)) {
-            s->moved_since_build = true;
-            rows = solver_prepared_rows(s);
-        }
         halo_stale |= pass->writes;
         if (changed > 0) ghost_stale |= pass->writes & GHOST_STATE;
     }
     /* the RK stages read every field at the neighbours */
     refresh_for(s, frame, ~UINT64_C(0), &halo_stale, &ghost_stale);
     return 0;
+}
+
+uint64_t passes_prepare_writes(void)
+{
+    uint64_t writes = 0;
+    for (size_t k = 0; k < sizeof prepare_passes / sizeof prepare_passes[0]; k++)
+        writes |= prepare_passes[k].writes;
+    return writes;
 }

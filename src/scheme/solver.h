@@ -76,7 +76,6 @@ typedef struct solver {
     long step;
     double max_acc;                 /* largest |du/dt| of the last step (dt_a of Eq. 8) */
     double skin;                    /* neighbour-list margin of this step */
-    bool moved_since_build;         /* a pass of the preparation moved particles (none does) */
     double max_displacement;        /* largest move of a particle during the last step */
     double work_in;                 /* integral of the input power -sum m a_tank . u */
     surface_tension_params st;      /* sigma and the calibration of the interface function */
@@ -99,13 +98,14 @@ static inline bool solver_masses_vary(const solver *s)
     return rhs_masses_vary(&s->pp, s->eta_control.eta);
 }
 
-/* The neighbour rows for a pair loop between solver_prepare and the first stage's move (the
- * outputs of a step, the first stage's right-hand side): the particles are where the lists
- * were built, so the rows' near parts hold every pair within 2h (core/cells.h); the whole
- * rows should a pass of the preparation have moved particles. */
+/* The neighbour rows for a pair loop between the lists' build and the first stage's move (the
+ * passes of solver_prepare, the outputs of a step, the first stage's right-hand side): no
+ * pass moves a particle (passes_prepare_writes, checked by tests/test_near_rows.c), so the
+ * particles are where the lists were built, and the rows' near parts hold every pair within
+ * 2h (core/cells.h). */
 static inline neighbour_list solver_prepared_rows(const solver *s)
 {
-    return s->moved_since_build ? s->nl : neighbours_near(&s->nl);
+    return neighbours_near(&s->nl);
 }
 
 /* The global reductions of the run: over every process with a domain, NULL without. */
