@@ -80,13 +80,13 @@ void DIM_NAME(estimate_run)(const config *cfg, const derived *dv, int threads, r
        particle) */
     double grid = (cells + 1.0) * sizeof(size_t) + 2.0 * sizeof(uint32_t) * total;
     if (DIM * total > 2.0 * RK_MASS * n) grid += DIM * sizeof(double) * total;
-    /* surface tension's work over the fluid (a wall's image reads its source's) and its sums
-       per body (at most one body a particle) */
-    double st = cfg->surface_tension > 0.0
-                    ? ((2.0 * DIM + 2.0 + BALANCE_FIRST + BALANCE_SECOND) * sizeof(double) +
-                       sizeof(int32_t)) *
-                          n
-                    : 0.0;
+    /* surface tension's work over the fluid (a wall's image reads its source's; its normals
+       and curvature in the stage's rates, solver_surface_tension_room) and its sums per body
+       (at most one body a particle) */
+    double st =
+        cfg->surface_tension > 0.0
+            ? ((DIM + 1.0 + BALANCE_FIRST + BALANCE_SECOND) * sizeof(double) + sizeof(int32_t)) * n
+            : 0.0;
 
     e->n_fluid = n;
     e->n_ghost = ghosts;

@@ -223,7 +223,8 @@ void solver_advance(solver *s, double t_stop)
             tank_refresh_ghosts(&s->tank, p, &frame, s->pp.rho0, s->pp.c0);
             if (s->pp.surface_tension) /* from the stage's positions (surface_tension.h) */
                 surface_tension_compute(&s->st, &s->pp.k, p, &s->nl, &s->bodies,
-                                        solver_bodies_domain(s), &s->st_work);
+                                        solver_bodies_domain(s), &s->st_work,
+                                        solver_surface_tension_room(s));
         }
         /* stage 0 at the positions of the build (solver_prepared_rows) */
         neighbour_list prepared = solver_prepared_rows(s);

@@ -133,10 +133,9 @@ static long frozen_terms(solver *s, const tank_frame *frame, const neighbour_lis
 static long surface_tension(solver *s, const tank_frame *frame, const neighbour_list *rows)
 {
     (void)frame;
-    if (surface_tension_reserve(&s->st_work, particles_images_begin(&s->p), s->bodies.count))
-        return -1;
+    if (solver_reserve_surface_tension(s)) return -1;
     surface_tension_compute(&s->st, &s->pp.k, &s->p, rows, &s->bodies, solver_bodies_domain(s),
-                            &s->st_work);
+                            &s->st_work, solver_surface_tension_room(s));
     return 0;
 }
 

@@ -62,6 +62,27 @@ static int grow_mass_arrays(solver *s, size_t n)
     return 0;
 }
 
+/* The stage's rates du and drho, room for n particles at least (solver_surface_tension_room
+ * lends them over the fluid and the halo). */
+static int grow_rates(solver *s, size_t n)
+{
+    if (n <= s->rate_capacity) return 0;
+    for (int d = 0; d < DIM; d++)
+        if (grow((void **)&s->k.du[d], n, sizeof(double))) return -1;
+    if (grow((void **)&s->k.drho, n, sizeof(double))) return -1;
+    s->rate_capacity = n;
+    return 0;
+}
+
+int solver_reserve_surface_tension(solver *s)
+{
+    size_t sources = particles_images_begin(&s->p);
+    if (grow_rates(s, sources ? sources : 1) ||
+        surface_tension_reserve(&s->st_work, sources, s->bodies.count))
+        return -1;
+    return 0;
+}
+
 int solver_reserve(solver *s, size_t n_fluid)
 {
     size_t n = n_fluid ? n_fluid : 1;
@@ -75,9 +96,7 @@ int solver_reserve(solver *s, size_t n_fluid)
         s->sum[v] = s->rk_block + (size_t)(RK_MASS + v) * n;
     }
     s->order = (uint32_t *)s->rk_block; /* the sort by cell, before a step */
-    for (int d = 0; d < DIM; d++)
-        if (grow((void **)&s->k.du[d], n, sizeof(double))) return -1;
-    if (grow((void **)&s->k.drho, n, sizeof(double))) return -1;
+    if (grow_rates(s, n)) return -1;
     if (s->k.dm && grow_mass_arrays(s, n)) return -1;
     if (grow((void **)&s->scratch, n, sizeof(double))) return -1;
     s->work_capacity = n;

@@ -70,6 +70,8 @@ typedef struct solver {
     uint32_t *order;      /* n_fluid sort permutation (32-bit, as the cell grid's items), used
                              only between steps: it lies in rk_block */
     size_t work_capacity; /* the fluid particles these arrays hold room for */
+    size_t rate_capacity; /* k.du and k.drho: work_capacity, or the fluid and the halo when
+                             lent to surface tension (solver_surface_tension_room) */
 
     double t, dt;   /* time; size of the prepared step */
     double last_dt; /* size of the step that ended at t */
@@ -126,19 +128,20 @@ static inline double solver_max(const solver *s, const double *a, size_t n)
     return reducer_max(solver_reducer(s), a, n);
 }
 
-#define solver_init           DIM_NAME(solver_init)
-#define solver_init_part      DIM_NAME(solver_init_part)
-#define solver_strips_at_most DIM_NAME(solver_strips_at_most)
-#define solver_reserve        DIM_NAME(solver_reserve)
-#define solver_reserve_masses DIM_NAME(solver_reserve_masses)
-#define solver_free           DIM_NAME(solver_free)
-#define solver_step           DIM_NAME(solver_step)
-#define solver_prepare        DIM_NAME(solver_prepare)
-#define solver_advance        DIM_NAME(solver_advance)
-#define solver_frame          DIM_NAME(solver_frame)
-#define solver_update_eos     DIM_NAME(solver_update_eos)
-#define solver_diagnostics    DIM_NAME(solver_diagnostics)
-#define solver_health         DIM_NAME(solver_health)
+#define solver_init                    DIM_NAME(solver_init)
+#define solver_init_part               DIM_NAME(solver_init_part)
+#define solver_strips_at_most          DIM_NAME(solver_strips_at_most)
+#define solver_reserve                 DIM_NAME(solver_reserve)
+#define solver_reserve_masses          DIM_NAME(solver_reserve_masses)
+#define solver_reserve_surface_tension DIM_NAME(solver_reserve_surface_tension)
+#define solver_free                    DIM_NAME(solver_free)
+#define solver_step                    DIM_NAME(solver_step)
+#define solver_prepare                 DIM_NAME(solver_prepare)
+#define solver_advance                 DIM_NAME(solver_advance)
+#define solver_frame                   DIM_NAME(solver_frame)
+#define solver_update_eos              DIM_NAME(solver_update_eos)
+#define solver_diagnostics             DIM_NAME(solver_diagnostics)
+#define solver_health                  DIM_NAME(solver_health)
 
 /* Particles on a lattice filling the liquid box with the hydrostatic state (sec. 2.1).
  * Returns 0, or 2 with a message. */
@@ -155,6 +158,19 @@ size_t solver_strips_at_most(const solver *s);
 /* Room in the work arrays for n_fluid fluid particles (an MPI process's share changes from
  * step to step). Returns 0, or -1 when out of memory. */
 int solver_reserve(solver *s, size_t n_fluid);
+/* Room for surface tension's work over the fluid and the halo, and for what the solver lends
+ * it (solver_surface_tension_room). Returns 0, or -1 when out of memory. */
+int solver_reserve_surface_tension(solver *s);
+/* The room surface_tension_compute borrows: the stage's rates du and drho. The force is computed
+ * only between one stage's rk_accumulate, which has added the rates to the weighted sum, and
+ * the next right-hand side, which writes them again (passes.c at stage 0, integrate.c at the
+ * others), when they hold nothing. */
+static inline surface_tension_room solver_surface_tension_room(const solver *s)
+{
+    surface_tension_room room = {.kappa = s->k.drho};
+    for (int d = 0; d < DIM; d++) room.normal[d] = s->k.du[d];
+    return room;
+}
 /* Allocates the masses' RK4 arrays (a step with variable masses) if it has not yet. Returns
  * 0, or -1 when out of memory. */
 int solver_reserve_masses(solver *s);

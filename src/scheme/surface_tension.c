@@ -42,11 +42,8 @@ int surface_tension_reserve(surface_tension_work *w, size_t n_sources, size_t n_
     if (n_sources <= w->capacity) return reserve_bodies(w, n_bodies);
     surface_tension_free(w);
     int ok = 1;
-    for (int d = 0; d < DIM; d++) {
-        ok &= (w->normal[d] = malloc(n_sources * sizeof(double))) != NULL;
+    for (int d = 0; d < DIM; d++)
         ok &= (w->smooth[d] = malloc(n_sources * sizeof(double))) != NULL;
-    }
-    ok &= (w->kappa = malloc(n_sources * sizeof(double))) != NULL;
     ok &= (w->band_sum = malloc(n_sources * sizeof(double))) != NULL;
     if (!ok) {
         surface_tension_free(w);
@@ -58,11 +55,7 @@ int surface_tension_reserve(surface_tension_work *w, size_t n_sources, size_t n_
 
 void surface_tension_free(surface_tension_work *w)
 {
-    for (int d = 0; d < DIM; d++) {
-        free(w->normal[d]);
-        free(w->smooth[d]);
-    }
-    free(w->kappa);
+    for (int d = 0; d < DIM; d++) free(w->smooth[d]);
     free(w->band_sum);
     free(w->first);
     free(w->second);
@@ -77,7 +70,8 @@ void surface_tension_free(surface_tension_work *w)
  * move pumps energy into the surface's short waves (docs/surface-tension.md). 0 in the
  * interior. */
 static void interface_and_normals(const surface_tension_params *st, const kernel *k, particles *p,
-                                  const neighbour_list *nl, surface_tension_work *w)
+                                  const neighbour_list *nl, surface_tension_work *w,
+                                  double *const normal[DIM])
 {
     PARALLEL_FOR_OVER_S_F
     for (size_t i = 0; i < p->n_fluid; i++) {
@@ -101,7 +95,7 @@ static void interface_and_normals(const surface_tension_params *st, const kernel
         }
         p->interface[i] = delta;
         w->band_sum[i] = band;
-        vec_store(w->normal, i, n);
+        vec_store(normal, i, n);
     }
 }
 
@@ -292,18 +286,18 @@ static void balance_bodies(particles *p, const bodies *bs, const bodies_domain *
 
 void surface_tension_compute(const surface_tension_params *st, const kernel *k, particles *p,
                              const neighbour_list *nl, const bodies *b, const bodies_domain *d,
-                             surface_tension_work *w)
+                             surface_tension_work *w, surface_tension_room room)
 {
-    interface_and_normals(st, k, p, nl, w);
+    interface_and_normals(st, k, p, nl, w, room.normal);
     bodies_share(d, p, p->interface);
     bodies_share(d, p, w->band_sum);
-    for (int c = 0; c < DIM; c++) bodies_share(d, p, w->normal[c]);
+    for (int c = 0; c < DIM; c++) bodies_share(d, p, room.normal[c]);
     /* a wall's image reads its source's interface function and mirrored normals
        (particle_source_scalar and _vector; its S_F flag from tank_mirror_step_fields): the walls
        continue the surface at a right angle (no contact-angle model, docs/surface-tension.md) */
-    smoothed_normals(k, p, nl, d, w->normal, w->smooth);
-    surface_curvature(st, k, p, nl, d, w->smooth, w->kappa);
-    band_force(st, k, p, nl, w->smooth, w->kappa, w->band_sum);
+    smoothed_normals(k, p, nl, d, room.normal, w->smooth);
+    surface_curvature(st, k, p, nl, d, w->smooth, room.kappa);
+    band_force(st, k, p, nl, w->smooth, room.kappa, w->band_sum);
     balance_bodies(p, b, d, w);
 }
 

@@ -41,13 +41,20 @@ enum {
  * images of a narrow 3D tank are 40-60 % of its fluid. */
 typedef struct {
     size_t capacity;        /* particles: the fluid and the halo */
-    double *normal[DIM];    /* the normal of S_F at the stage's positions */
-    double *smooth[DIM];    /* its Shepard average over the free surface */
-    double *kappa;          /* the curvature of the free-surface particles */
+    double *smooth[DIM];    /* the normal's Shepard average over the free surface */
     double *band_sum;       /* sum W V over S_F, self included: what delta V spreads over */
     size_t body_capacity;   /* bodies */
     double *first, *second; /* the balance's sums, BALANCE_FIRST and BALANCE_SECOND a body */
 } surface_tension_work;
+
+/* Room the caller lends to one surface_tension_compute, over the fluid and the halo, whose
+ * contents before the call do not matter and after it are of no use: the solver lends the
+ * stage's rates (solver_surface_tension_room), which hold nothing while the force is computed,
+ * DIM + 1 doubles a particle less to hold. */
+typedef struct {
+    double *normal[DIM]; /* the normal of S_F at the stage's positions */
+    double *kappa;       /* the curvature of the free-surface particles */
+} surface_tension_room;
 
 #define surface_tension_setup   DIM_NAME(surface_tension_setup)
 #define surface_tension_compute DIM_NAME(surface_tension_compute)
@@ -60,7 +67,7 @@ surface_tension_params surface_tension_setup(const kernel *k, double dr, double 
                                              double lambda_min);
 
 /* Makes room in w for n_sources particles (the fluid and the halo: particles_images_begin) and
- * n_bodies bodies. Returns 0, or -1 when out of memory. */
+ * n_bodies bodies (the lent room is the caller's). Returns 0, or -1 when out of memory. */
 int surface_tension_reserve(surface_tension_work *w, size_t n_sources, size_t n_bodies);
 void surface_tension_free(surface_tension_work *w);
 
@@ -74,7 +81,7 @@ void surface_tension_free(surface_tension_work *w);
  * through d (the halo's work arrays, the bodies' sums; NULL: one process). */
 void surface_tension_compute(const surface_tension_params *st, const kernel *k, particles *p,
                              const neighbour_list *nl, const bodies *b, const bodies_domain *d,
-                             surface_tension_work *w);
+                             surface_tension_work *w, surface_tension_room room);
 
 /* The surface energy sigma sum delta V (J; per unit width in 2D): sigma times the discrete
  * interface area, whose measure delta integrates to 1 across a flat surface. Needs this
