@@ -2,9 +2,9 @@
  * neighbour rows, the cell grid, the RK4 and work arrays). Beyond a few MiB each such array is
  * offered to the kernel for transparent huge pages (madvise MADV_HUGEPAGE; Debian's default
  * mode is "madvise", which backs only the ranges a program asks for): the passes stream a few
- * dozen arrays side by side, and with 4 KiB pages a tank of 3e5 particles and more spends a
- * tenth of its time on misses of the address translation (docs/performance.md). Free with
- * free(). Where the kernel has no huge pages, or they are off, nothing changes. */
+ * dozen arrays side by side, each page of each a translation to look up, and a 2D tank of 1e6
+ * particles took about a fifth longer a step with 4 KiB pages (docs/performance.md). Free
+ * with free(). Where the kernel has no huge pages, or they are off, nothing changes. */
 #ifndef VCSPH_BIG_ALLOC_H
 #define VCSPH_BIG_ALLOC_H
 
