@@ -1,11 +1,11 @@
 /* bench_scaling: the cost of a particle-step against the number of particles, from 1e4 up to
  * MAX (default 1e6), on one thread, for the 2D INM1 tank (cases/inm1.ini: delta-plus-ALE with
  * every term) or, built with DIM = 3, the INM2 3D tank (cases/inm2-3d.ini). Each size is the
- * case at the resolution that gives that many fluid particles, timed over enough steps to make
- * about 1e6 particle-steps (at least one) after one warm-up step. Prints microseconds per
- * particle-step, bytes per particle and each size's cost against the smallest: a flat curve
- * means the cache and the neighbour search scale (issue 22 asks for 20 %). A benchmark: it
- * never fails on timing. Usage: bench_scaling_2d [MAX_PARTICLES] */
+ * case at the resolution that gives that many fluid particles, timed step by step over enough
+ * steps to make about 1e6 particle-steps (at least MIN_STEPS) after one warm-up step. Prints
+ * microseconds per particle-step (the median step's), bytes per particle and each size's cost
+ * against the smallest: a flat curve means the cache and the neighbour search scale (issue 22
+ * asks for 20 %). A benchmark: it never fails on timing. Usage: bench_scaling_2d [MAX] */
 #include "app/progress.h"
 #include "bench_memory.h"
 #include "scheme/solver.h"
@@ -49,7 +49,18 @@ static int resolution_for(double particles)
     return (int)lround(liquid_height / dr);
 }
 
-/* Times one size; returns its microseconds per particle-step, or a negative on error. */
+/* The fewest steps a size is timed over: the median of a few steps, not one step, so that a
+ * step the shared machine slowed does not make the largest size look dearer. */
+#define MIN_STEPS 5
+
+static int by_value(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* Times one size: the median over its steps of a step's wall time, in microseconds per
+ * particle-step; a negative on error. */
 static double time_size(double target, double *particles, double *bytes)
 {
     char set[64], err[1024];
@@ -63,16 +74,21 @@ static double time_size(double target, double *particles, double *bytes)
         return -1.0;
     }
     double n = (double)s.p.n_fluid;
-    int steps = n < 1e6 ? (int)ceil(1e6 / n) : 1;
-    if (solver_step(&s, cfg.t_end)) return -1.0; /* warm-up: allocation, first lists */
-    double t0 = progress_wall_time();
-    for (int k = 0; k < steps; k++)
+    int steps = n < 1e6 / MIN_STEPS ? (int)ceil(1e6 / n) : MIN_STEPS;
+    double *wall = malloc((size_t)steps * sizeof *wall);
+    if (!wall || solver_step(&s, cfg.t_end)) return -1.0; /* warm-up: allocation, first lists */
+    for (int k = 0; k < steps; k++) {
+        double t0 = progress_wall_time();
         if (solver_step(&s, cfg.t_end)) return -1.0;
-    double wall = progress_wall_time() - t0;
+        wall[k] = progress_wall_time() - t0;
+    }
+    qsort(wall, (size_t)steps, sizeof *wall, by_value);
+    double median = steps % 2 ? wall[steps / 2] : 0.5 * (wall[steps / 2 - 1] + wall[steps / 2]);
+    free(wall);
     *particles = n;
     *bytes = bytes_per_particle(&s);
     solver_free(&s);
-    return 1e6 * wall / (n * steps);
+    return 1e6 * median / n;
 }
 
 int main(int argc, char **argv)
