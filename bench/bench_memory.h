@@ -12,10 +12,16 @@
 
 #include <malloc.h>
 
-static double bytes_per_particle(const solver *s)
+/* The process's heap in use, bytes. */
+static inline double heap_in_use(void)
 {
     struct mallinfo2 heap = mallinfo2();
-    return (double)(heap.uordblks + heap.hblkhd) / (double)s->p.n_fluid;
+    return (double)(heap.uordblks + heap.hblkhd);
+}
+
+static inline double bytes_per_particle(const solver *s)
+{
+    return heap_in_use() / (double)s->p.n_fluid;
 }
 
 #endif

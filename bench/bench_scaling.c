@@ -1,9 +1,10 @@
 /* bench_scaling: the cost of a particle-step against the number of particles, from 1e4 up to
  * MAX (default 1e6), on one thread, for the 2D INM1 tank (cases/inm1.ini: delta-plus-ALE with
  * every term) or, built with DIM = 3, the INM2 3D tank (cases/inm2-3d.ini). Each size is the
- * case at the resolution that gives that many fluid particles, timed step by step over enough
- * steps to make about 1e6 particle-steps (at least MIN_STEPS) after one warm-up step. Prints
- * microseconds per particle-step (the median step's), bytes per particle and each size's cost
+ * case at the resolution that gives that many fluid particles, set up (all sizes at once) and
+ * stepped twice to warm up, then timed in ROUNDS rounds of about 2e5 particle-steps each, the
+ * sizes taking turns within a round. Prints microseconds per particle-step (the median round
+ * and the range of the rounds), the heap per particle each size holds, and each size's cost
  * against the smallest: a flat curve means the cache and the neighbour search scale (issue 22
  * asks for 20 %). A benchmark: it never fails on timing. Usage: bench_scaling_2d [MAX] */
 #include "app/progress.h"
@@ -49,9 +50,22 @@ static int resolution_for(double particles)
     return (int)lround(liquid_height / dr);
 }
 
-/* The fewest steps a size is timed over: the median of a few steps, not one step, so that a
- * step the shared machine slowed does not make the largest size look dearer. */
-#define MIN_STEPS 5
+/* Rounds: every size is timed once a round, the sizes one after the other, and its cost is
+ * the median of its rounds. The shared machine's speed drifts by a fifth within minutes; timed
+ * one size after the other, a size would carry the speed of its own minutes into the curve. */
+#define ROUNDS 5
+/* The particle-steps of a size in one round: 1e6 over the rounds, as a whole timing was. */
+#define ROUND_PARTICLE_STEPS (1e6 / ROUNDS)
+/* 1e4 to 1e6 in steps of sqrt(10) */
+#define MAX_SIZES 5
+
+typedef struct {
+    config cfg;
+    solver s;
+    double n, bytes;
+    int steps; /* a round's */
+    double us[ROUNDS];
+} size_run;
 
 static int by_value(const void *a, const void *b)
 {
@@ -59,51 +73,64 @@ static int by_value(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
-/* Times one size: the median over its steps of a step's wall time, in microseconds per
- * particle-step; a negative on error. */
-static double time_size(double target, double *particles, double *bytes)
+/* Sets up the case at `target` particles and runs its two warm-up steps (the first allocates
+ * and guesses the rows' length, the second sizes them by the first's longest row); its bytes
+ * per particle are what the heap in use grew by (bench_memory.h: the sizes set up before it
+ * stay alive). 0, or -1 on error. */
+static int set_up_size(size_run *r, double target)
 {
     char set[64], err[1024];
     snprintf(set, sizeof set, "numerics.resolution=%d", resolution_for(target));
     const char *overrides[] = {set};
-    config cfg;
-    solver s;
-    if (config_load_string(&cfg, bench_case, "scaling", overrides, 1, err, sizeof err) ||
-        solver_init(&s, &cfg, err, sizeof err)) {
+    double heap0 = heap_in_use();
+    if (config_load_string(&r->cfg, bench_case, "scaling", overrides, 1, err, sizeof err) ||
+        solver_init(&r->s, &r->cfg, err, sizeof err)) {
         fprintf(stderr, "bench_scaling: %s\n", err);
-        return -1.0;
+        return -1;
     }
-    double n = (double)s.p.n_fluid;
-    int steps = n < 1e6 / MIN_STEPS ? (int)ceil(1e6 / n) : MIN_STEPS;
-    double *wall = malloc((size_t)steps * sizeof *wall);
-    if (!wall || solver_step(&s, cfg.t_end)) return -1.0; /* warm-up: allocation, first lists */
-    for (int k = 0; k < steps; k++) {
-        double t0 = progress_wall_time();
-        if (solver_step(&s, cfg.t_end)) return -1.0;
-        wall[k] = progress_wall_time() - t0;
-    }
-    qsort(wall, (size_t)steps, sizeof *wall, by_value);
-    double median = steps % 2 ? wall[steps / 2] : 0.5 * (wall[steps / 2 - 1] + wall[steps / 2]);
-    free(wall);
-    *particles = n;
-    *bytes = bytes_per_particle(&s);
-    solver_free(&s);
-    return 1e6 * median / n;
+    for (int k = 0; k < 2; k++)
+        if (solver_step(&r->s, r->cfg.t_end)) return -1;
+    r->n = (double)r->s.p.n_fluid;
+    r->bytes = (heap_in_use() - heap0) / r->n;
+    r->steps = (int)ceil(ROUND_PARTICLE_STEPS / r->n);
+    return 0;
+}
+
+/* One round of a size: microseconds per particle-step, or a negative on error. */
+static double time_round(size_run *r)
+{
+    double t0 = progress_wall_time();
+    for (int k = 0; k < r->steps; k++)
+        if (solver_step(&r->s, r->cfg.t_end)) return -1.0;
+    return 1e6 * (progress_wall_time() - t0) / (r->n * r->steps);
 }
 
 int main(int argc, char **argv)
 {
     double max = argc > 1 ? atof(argv[1]) : 1e6;
     omp_set_num_threads(1);
-    printf("bench_scaling: %s, delta-plus-ALE with every term, one thread\n", tank_name);
-    printf("%12s %14s %14s %10s\n", "particles", "us/PS", "bytes/particle", "cost/first");
+    printf("bench_scaling: %s, delta-plus-ALE with every term, one thread, the median of %d "
+           "rounds\n",
+           tank_name, ROUNDS);
+    size_run *runs = calloc(MAX_SIZES, sizeof *runs);
+    int sizes = 0;
+    for (double target = 1e4; target <= max * 1.01 && sizes < MAX_SIZES; target *= sqrt(10.0))
+        if (!runs || set_up_size(&runs[sizes++], target)) return 1;
+    for (int round = 0; round < ROUNDS; round++)
+        for (int k = 0; k < sizes; k++)
+            if ((runs[k].us[round] = time_round(&runs[k])) < 0.0) return 1;
+    printf("%12s %14s %14s %10s %18s\n", "particles", "us/PS", "bytes/particle", "cost/first",
+           "rounds' range");
     double first = 0.0;
-    for (double target = 1e4; target <= max * 1.01; target *= sqrt(10.0)) {
-        double particles, bytes, us = time_size(target, &particles, &bytes);
-        if (us < 0.0) return 1;
+    for (int k = 0; k < sizes; k++) {
+        size_run *r = &runs[k];
+        qsort(r->us, ROUNDS, sizeof *r->us, by_value);
+        double us = r->us[ROUNDS / 2];
         if (first == 0.0) first = us;
-        printf("%12.0f %14.3f %14.0f %10.2f\n", particles, us, bytes, us / first);
-        fflush(stdout);
+        printf("%12.0f %14.3f %14.0f %10.2f %8.3f - %7.3f\n", r->n, us, r->bytes, us / first,
+               r->us[0], r->us[ROUNDS - 1]);
+        solver_free(&r->s);
     }
+    free(runs);
     return 0;
 }
