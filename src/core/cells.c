@@ -1,6 +1,5 @@
 /* cells: binning by counting sort and gather-style neighbour lists. */
 #include "core/cells.h"
-#include "core/big_alloc.h"
 #include "core/cells_scan.h"
 #include "core/vec.h"
 
@@ -83,10 +82,10 @@ static inline size_t cell_index(const cell_grid *g, const int c[DIM])
 int cells_bin(cell_grid *g, double *const x[DIM], size_t n)
 {
     if (n > g->item_capacity) {
-        uint32_t *item = big_realloc(g->item, n * sizeof *item);
+        uint32_t *item = realloc(g->item, n * sizeof *item);
         if (!item) return -1;
         g->item = item;
-        uint32_t *cell_of = big_realloc(g->cell_of, n * sizeof *cell_of);
+        uint32_t *cell_of = realloc(g->cell_of, n * sizeof *cell_of);
         if (!cell_of) return -1;
         g->cell_of = cell_of;
         g->item_capacity = n;
@@ -192,13 +191,13 @@ static bool pack_row(const int32_t *row, int32_t count, int32_t n_rows, uint16_t
 static int reserve_rows(neighbour_list *nl, size_t n_rows)
 {
     if (n_rows > nl->capacity_rows) {
-        int32_t *count = big_realloc(nl->count, n_rows * sizeof *count);
+        int32_t *count = realloc(nl->count, n_rows * sizeof *count);
         if (!count) return -1;
         nl->count = count;
-        int32_t *base = big_realloc(nl->base, 2 * n_rows * sizeof *base);
+        int32_t *base = realloc(nl->base, 2 * n_rows * sizeof *base);
         if (!base) return -1;
         nl->base = base;
-        int32_t *near = big_realloc(nl->near, n_rows * sizeof *near);
+        int32_t *near = realloc(nl->near, n_rows * sizeof *near);
         if (!near) return -1;
         nl->near = near;
         nl->capacity_rows = n_rows;
@@ -213,9 +212,9 @@ static int reserve_rows(neighbour_list *nl, size_t n_rows)
     nl->index = NULL;
     nl->index_capacity = 0;
     if (nl->wide)
-        nl->index = big_malloc(need * sizeof *nl->index);
+        nl->index = malloc(need * sizeof *nl->index);
     else
-        nl->packed = big_malloc(need * sizeof *nl->packed);
+        nl->packed = malloc(need * sizeof *nl->packed);
     if (!nl->index && !nl->packed) return -1;
     nl->index_capacity = need;
     return 0;
@@ -228,7 +227,7 @@ static int place_positions(cell_grid *g, size_t binned, cells_room lent)
     if (!room || lent.doubles < DIM * binned) {
         if (DIM * binned > g->own_xs_capacity) {
             free(g->own_xs);
-            g->own_xs = big_malloc(DIM * binned * sizeof *g->own_xs);
+            g->own_xs = malloc(DIM * binned * sizeof *g->own_xs);
             g->own_xs_capacity = g->own_xs ? DIM * binned : 0;
             if (!g->own_xs) return -1;
         }

@@ -1,6 +1,5 @@
 /* particles: allocation and reordering of the SoA store. */
 #include "core/particles.h"
-#include "core/big_alloc.h"
 
 #include <stdbool.h>
 #include <stdlib.h>
@@ -9,7 +8,7 @@
 /* Grows *ptr from `old` to `count` elements of `size` bytes, the new ones zero. */
 static int grow(void **ptr, size_t old, size_t count, size_t size)
 {
-    void *q = big_realloc(*ptr, count * size);
+    void *q = realloc(*ptr, count * size);
     if (!q) return -1;
     memset((char *)q + old * size, 0, (count - old) * size);
     *ptr = q;

@@ -1,6 +1,5 @@
 /* bodies: union-find over the band S_F, then a compact numbering of its sets. */
 #include "scheme/bodies.h"
-#include "core/big_alloc.h"
 #include "core/pair.h"
 #include "diag/freesurface.h"
 #include <stdlib.h>
@@ -10,8 +9,8 @@ int bodies_reserve(bodies *b, size_t n)
 {
     if (n <= b->capacity) return 0;
     bodies_free(b);
-    b->parent = big_malloc(n * sizeof *b->parent);
-    b->id = big_malloc(n * sizeof *b->id);
+    b->parent = malloc(n * sizeof *b->parent);
+    b->id = malloc(n * sizeof *b->id);
     b->at_wall = malloc(n * sizeof *b->at_wall);
     if (!b->parent || !b->id || !b->at_wall) {
         bodies_free(b);

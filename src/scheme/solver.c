@@ -1,7 +1,6 @@
 /* solver: set-up and the neighbour structures of a step. */
 #include "scheme/solver.h"
 #include "boundary/lattice.h"
-#include "core/big_alloc.h"
 #include "diag/freesurface.h"
 #include "diag/health.h"
 #include "physics/eos.h"
@@ -45,7 +44,7 @@ static void physics_setup(solver *s)
 
 static int grow(void **a, size_t n, size_t size)
 {
-    void *grown = big_realloc(*a, n * size);
+    void *grown = realloc(*a, n * size);
     if (!grown) return -1;
     *a = grown;
     return 0;
@@ -90,7 +89,7 @@ int solver_reserve(solver *s, size_t n_fluid)
     if (n <= s->work_capacity) return 0;
     /* nothing in the block outlives a step (solver_advance writes it before reading it) */
     free(s->rk_block);
-    s->rk_block = big_malloc(2 * RK_MASS * n * sizeof(double));
+    s->rk_block = malloc(2 * RK_MASS * n * sizeof(double));
     if (!s->rk_block) return -1;
     for (int v = 0; v < RK_MASS; v++) {
         s->y0[v] = s->rk_block + (size_t)v * n;

@@ -1,7 +1,6 @@
 /* surface_tension: interface function, curvature, the CSF force and its momentum balance. */
 #include "scheme/surface_tension.h"
 #include "boundary/tank.h"
-#include "core/big_alloc.h"
 #include "core/reduce.h"
 #include "diag/freesurface.h"
 #include "physics/moment.h"
@@ -44,8 +43,8 @@ int surface_tension_reserve(surface_tension_work *w, size_t n_sources, size_t n_
     surface_tension_free(w);
     int ok = 1;
     for (int d = 0; d < DIM; d++)
-        ok &= (w->smooth[d] = big_malloc(n_sources * sizeof(double))) != NULL;
-    ok &= (w->band_sum = big_malloc(n_sources * sizeof(double))) != NULL;
+        ok &= (w->smooth[d] = malloc(n_sources * sizeof(double))) != NULL;
+    ok &= (w->band_sum = malloc(n_sources * sizeof(double))) != NULL;
     if (!ok) {
         surface_tension_free(w);
         return -1;
