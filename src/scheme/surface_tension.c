@@ -42,8 +42,7 @@ int surface_tension_reserve(surface_tension_work *w, size_t n_sources, size_t n_
     if (n_sources <= w->capacity) return reserve_bodies(w, n_bodies);
     surface_tension_free(w);
     int ok = 1;
-    for (int d = 0; d < DIM; d++)
-        ok &= (w->smooth[d] = malloc(n_sources * sizeof(double))) != NULL;
+    for (int d = 0; d < DIM; d++) ok &= (w->smooth[d] = malloc(n_sources * sizeof(double))) != NULL;
     ok &= (w->band_sum = malloc(n_sources * sizeof(double))) != NULL;
     if (!ok) {
         surface_tension_free(w);
