@@ -1,12 +1,15 @@
 /* bench_scaling: the cost of a particle-step against the number of particles, from 1e4 up to
  * MAX (default 1e6), on one thread, for the 2D INM1 tank (cases/inm1.ini: delta-plus-ALE with
  * every term) or, built with DIM = 3, the INM2 3D tank (cases/inm2-3d.ini). Each size is the
- * case at the resolution that gives that many fluid particles, set up (all sizes at once) and
+ * case at the resolution that gives about that many fluid particles on a lattice of the
+ * same spacing along every axis (resolution_for), set up (all sizes at once) and
  * stepped twice to warm up, then timed in ROUNDS rounds of about 2e5 particle-steps each, the
  * sizes taking turns within a round. Prints microseconds per particle-step (the median round
- * and the range of the rounds), the heap per particle each size holds, and each size's cost
- * against the smallest: a flat curve means the cache and the neighbour search scale (issue 22
- * asks for 20 %). A benchmark: it never fails on timing. Usage: bench_scaling_2d [MAX] */
+ * and the range of the rounds), the heap per particle each size holds, each size's cost
+ * against the smallest size's in the same round (the median over the rounds, and their range)
+ * and its neighbours within 2h a particle: a flat curve means the cache and
+ * the neighbour search scale (issue 22 asks for 20 %). A benchmark: it never fails on timing.
+ * Usage: bench_scaling_2d [MAX] */
 #include "app/progress.h"
 #include "bench_memory.h"
 #include "scheme/solver.h"
@@ -43,11 +46,29 @@ static const char tank_name[] = "3D INM2 tank";
 #endif
 static const double liquid_height = 0.35;
 
-/* The resolution H_L / dr that gives about `particles` fluid particles. */
+/* The resolution H_L / dr nearest to the one that gives about `particles` fluid particles
+ * among those that give the lattice the spacing dr along every axis. The lattice fits a whole
+ * number of particles into each side of the liquid box (core/derived.c), spaced within
+ * dr / (2 n) of dr. The kernel's support, 2h = 3 dr in 3D and 4 dr in 2D, passes exactly
+ * through lattice points (30 of the 122 within 3 dr in 3D, 4 of the 48 within 4 dr in 2D), so
+ * a spacing a few per cent under dr across one side brings them inside: the 3D tank's 0.1 m width
+ * at 1e4 particles (6.57 dr, seven particles across) gave 125 neighbours within 2h where 1e5 (14.29
+ * dr, fourteen) gave 93, and cost a third more per particle-step for it. Sides of 1, 0.1 and 0.35 m
+ * hold 20 N / 7, 2 N / 7 and N spacings: N a multiple of 7 makes all of them dr. */
 static int resolution_for(double particles)
 {
     double dr = pow(liquid_volume / particles, 1.0 / DIM);
-    return (int)lround(liquid_height / dr);
+    int sevens = (int)lround(liquid_height / dr / 7.0);
+    return 7 * (sevens < 1 ? 1 : sevens);
+}
+
+/* The mean number of neighbours within 2h of a fluid particle in the rows of the step last
+ * built: the pairs a particle-step evaluates, which the cost per particle-step follows. */
+static double mean_near(const solver *s)
+{
+    double sum = 0.0;
+    for (size_t i = 0; i < s->p.n_fluid; i++) sum += s->nl.near[i];
+    return sum / (double)s->p.n_fluid;
 }
 
 /* Rounds: every size is timed once a round, the sizes one after the other, and its cost is
@@ -62,9 +83,10 @@ static int resolution_for(double particles)
 typedef struct {
     config cfg;
     solver s;
-    double n, bytes;
+    double n, bytes, neighbours;
     int steps; /* a round's */
     double us[ROUNDS];
+    double ratio[ROUNDS]; /* us against the smallest size's in the same round */
 } size_run;
 
 static int by_value(const void *a, const void *b)
@@ -93,6 +115,7 @@ static int set_up_size(size_run *r, double target)
     r->n = (double)r->s.p.n_fluid;
     r->bytes = (heap_in_use() - heap0) / r->n;
     r->steps = (int)ceil(ROUND_PARTICLE_STEPS / r->n);
+    r->neighbours = mean_near(&r->s);
     return 0;
 }
 
@@ -119,18 +142,22 @@ int main(int argc, char **argv)
     for (int round = 0; round < ROUNDS; round++)
         for (int k = 0; k < sizes; k++)
             if ((runs[k].us[round] = time_round(&runs[k])) < 0.0) return 1;
-    printf("%12s %14s %14s %10s %18s\n", "particles", "us/PS", "bytes/particle", "cost/first",
-           "rounds' range");
-    double first = 0.0;
+    printf("%10s %8s %16s %8s %10s %14s %10s\n", "particles", "us/PS", "rounds' range", "bytes",
+           "cost/first", "rounds' range", "neighbours");
+    /* each size against the smallest in the same round, where both ran within a minute */
+    for (int k = 0; k < sizes; k++)
+        for (int round = 0; round < ROUNDS; round++)
+            runs[k].ratio[round] = runs[k].us[round] / runs[0].us[round];
     for (int k = 0; k < sizes; k++) {
         size_run *r = &runs[k];
+        double *ratio = r->ratio;
+        qsort(ratio, ROUNDS, sizeof *ratio, by_value);
         qsort(r->us, ROUNDS, sizeof *r->us, by_value);
-        double us = r->us[ROUNDS / 2];
-        if (first == 0.0) first = us;
-        printf("%12.0f %14.3f %14.0f %10.2f %8.3f - %7.3f\n", r->n, us, r->bytes, us / first,
-               r->us[0], r->us[ROUNDS - 1]);
-        solver_free(&r->s);
+        printf("%10.0f %8.3f %7.3f - %6.3f %8.0f %10.2f %6.2f - %5.2f %10.1f\n", r->n,
+               r->us[ROUNDS / 2], r->us[0], r->us[ROUNDS - 1], r->bytes, ratio[ROUNDS / 2],
+               ratio[0], ratio[ROUNDS - 1], r->neighbours);
     }
+    for (int k = 0; k < sizes; k++) solver_free(&runs[k].s);
     free(runs);
     return 0;
 }
