@@ -17,7 +17,10 @@
  * particles' order, and so the sums' order, moved by round-off), and a seventh time when the
  * neighbour rows began to list the pairs within 2h first (src/core/cells*, the callers of
  * neighbours_build and neighbours_near: the sums' order at RK4's later stages moved by
- * round-off, 2e-9 of a value at most). Each line is one particle, in C's exact %a notation. */
+ * round-off, 2e-9 of a value at most), and an eighth time when the geometry pass and the
+ * density diffusion began to sum each row in eight interleaved partial sums (src/core/pair.c,
+ * src/core/pair_block.h, src/scheme/fields.c: the sums' order, round-off, 2e-8 of a value at
+ * most). Each line is one particle, in C's exact %a notation. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>

@@ -2,35 +2,42 @@
  * them. */
 #include "core/pair.h"
 #include "core/lanes_switch.h"
+#include "core/pair_block.h"
 
 #include <string.h>
 
-/* Blocks of values are passed between inline functions only, never across a call. */
-#pragma GCC diagnostic ignored "-Wpsabi"
-
-/* pair_of, entry by entry (the values of an entry beyond 2h stay unset: pair_at skips it) */
+/* pair_of, entry by entry, and what the blocks below store where it returns early: an entry
+ * with r^2 beyond the support has its r, W and F (which are 0 unless r / h rounds below 2), the
+ * padding up to the last block repeats the row's last entry with W = F = 0. Every entry of the
+ * whole blocks holds the same numbers in either form (pair_block.h reads them). */
 static void geometry_scalar(const kernel *k, double *const x[DIM], const int32_t *row,
                             int32_t count, vec xi, double *columns, size_t stride)
 {
-    for (int32_t n = 0; n < count; n++) {
+    int32_t padded = (count + PAIR_BLOCK - 1) / PAIR_BLOCK * PAIR_BLOCK;
+    for (int32_t n = 0; n < padded; n++) {
         pair pr;
-        bool within = pair_of(k, x, xi, row, n, &pr);
-        columns[PAIR_R2 * stride + (size_t)n] = pr.r2;
-        if (!within) continue;
+        if (!pair_of(k, x, xi, row, n < count ? n : count - 1, &pr)) {
+            pr.r = sqrt(pr.r2);
+            pr.w = kernel_w(k, pr.r);
+            pr.f = kernel_f(k, pr.r);
+        }
+        if (n >= count) pr.w = pr.f = 0.0;
         for (int d = 0; d < DIM; d++) columns[(size_t)d * stride + (size_t)n] = pr.r_ji.c[d];
+        columns[PAIR_R2 * stride + (size_t)n] = pr.r2;
         columns[PAIR_R * stride + (size_t)n] = pr.r;
         columns[PAIR_W * stride + (size_t)n] = pr.w;
         columns[PAIR_F * stride + (size_t)n] = pr.f;
     }
 }
 
-typedef double block __attribute__((vector_size(PAIR_BLOCK * sizeof(double))));
-typedef int64_t block_mask __attribute__((vector_size(PAIR_BLOCK * sizeof(double))));
-
 /* pair_of's operations on PAIR_BLOCK entries at once, without its branch: vec_sub, vec_norm2
  * (0 + a_0^2 + a_1^2 (+ a_2^2)), sqrt, kernel_w and kernel_f, lane by lane in the scalar order, so
- * the same bits. Entries past the row's end repeat its last one and land in the columns' padding
- * (stride is a multiple of PAIR_BLOCK). */
+ * the same bits. Entries past the row's end repeat its last one, with W = F = 0, and land in the
+ * columns' padding (stride is a multiple of PAIR_BLOCK). */
+/* From entry PAIR_BLOCK - m on: m ones, then zeros */
+static const double ones_then_zeros[2 * PAIR_BLOCK] = {1, 1, 1, 1, 1, 1, 1, 1,
+                                                       0, 0, 0, 0, 0, 0, 0, 0};
+
 __attribute__((always_inline)) static inline void
 geometry_blocks(const kernel *k, double *const x[DIM], const int32_t *row, int32_t count, vec xi,
                 double *columns, size_t stride)
@@ -39,23 +46,30 @@ geometry_blocks(const kernel *k, double *const x[DIM], const int32_t *row, int32
         size_t j[PAIR_BLOCK];
         for (int l = 0; l < PAIR_BLOCK; l++)
             j[l] = (size_t)row[n0 + l < count ? n0 + l : count - 1];
-        block sum = {0}, r;
+        pair_block sum = {0}, r;
         for (int d = 0; d < DIM; d++) {
             /* element by element into a register: through memory, the block's load would wait
                for eight stores (no store forwarding) */
             const double *a = x[d];
-            block c = {a[j[0]], a[j[1]], a[j[2]], a[j[3]], a[j[4]], a[j[5]], a[j[6]], a[j[7]]};
+            pair_block c = {a[j[0]], a[j[1]], a[j[2]], a[j[3]], a[j[4]], a[j[5]], a[j[6]], a[j[7]]};
             c -= xi.c[d];
             sum += c * c;
             memcpy(&columns[(size_t)d * stride + (size_t)n0], &c, sizeof c);
         }
         for (int l = 0; l < PAIR_BLOCK; l++) r[l] = __builtin_sqrt(sum[l]);
-        /* kernel_w and kernel_f, 0 where q >= 2 */
-        block q = r * k->inv_h, s = 1.0 - 0.5 * q, s2 = s * s;
-        block w = k->norm * s2 * s2 * (1.0 + 2.0 * q), f = k->f_norm * s * s * s;
-        block_mask beyond = q >= 2.0;
-        w = (block)(~beyond & (block_mask)w);
-        f = (block)(~beyond & (block_mask)f);
+        /* kernel_w and kernel_f, 0 where q >= 2, and (both are >= 0, so a product with 0 is
+           +0) past the row's end: a second mask made GCC 12 take the block apart element by
+           element */
+        pair_block q = r * k->inv_h, s = 1.0 - 0.5 * q, s2 = s * s;
+        pair_block w = k->norm * s2 * s2 * (1.0 + 2.0 * q), f = k->f_norm * s * s * s;
+        pair_block_mask beyond = q >= 2.0;
+        w = (pair_block)(~beyond & (pair_block_mask)w);
+        f = (pair_block)(~beyond & (pair_block_mask)f);
+        int32_t in_row = count - n0 < PAIR_BLOCK ? count - n0 : PAIR_BLOCK;
+        pair_block in_row_ones;
+        memcpy(&in_row_ones, &ones_then_zeros[PAIR_BLOCK - in_row], sizeof in_row_ones);
+        w *= in_row_ones;
+        f *= in_row_ones;
         memcpy(&columns[PAIR_R2 * stride + (size_t)n0], &sum, sizeof sum);
         memcpy(&columns[PAIR_R * stride + (size_t)n0], &r, sizeof r);
         memcpy(&columns[PAIR_W * stride + (size_t)n0], &w, sizeof w);

@@ -32,7 +32,9 @@ static inline bool pair_of(const kernel *k, double *const x[DIM], vec xi, const 
 /* The geometry of a whole row (pair_row_of, below), a column per quantity (r_ji's components,
  * r^2, r, W, F), `stride` doubles apart; entry n is row[n]'s. Each entry is computed by pair_of's
  * operations in pair_of's order, so the values are pair_of's to the bit; an entry beyond 2h (the
- * list's skin) may hold anything but its r^2, and pair_at skips it. Where the processor has AVX2
+ * list's skin) holds its r_ji, r^2, r and the kernel there (0 unless r / h rounds below 2), and
+ * pair_at skips it; the columns run on to a whole number of PAIR_BLOCKs, the row's last entry
+ * repeated with W = F = 0 (core/pair_block.h sums them). Where the processor has AVX2
  * or AVX-512 (core/lanes_switch.h), eight entries at a time in SIMD registers (core/pair.c). */
 enum { PAIR_R2 = DIM, PAIR_R, PAIR_W, PAIR_F, PAIR_COLUMNS };
 #define PAIR_BLOCK 8 /* entries computed at once; the columns' stride is a multiple of it */

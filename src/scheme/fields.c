@@ -1,4 +1,5 @@
-/* fields: per-step geometry and the frozen diffusion terms. */
+/* fields: per-step geometry and the frozen diffusion terms; the geometry pass and the diffusion
+ * sum each row a block of entries at a time (core/pair_block.h). */
 #include "scheme/fields.h"
 #include "diag/freesurface.h"
 #include "physics/ale.h"
@@ -6,7 +7,7 @@
 #include "physics/shifting.h"
 #include "physics/viscosity.h"
 #include "scheme/volume_correction.h"
-#include "core/pair.h"
+#include "core/pair_block.h"
 
 /* Sums of one particle over its neighbours: the geometry (Eqs. 10, 11, A.2) and the raw
  * sums of the renormalized gradients (theory §2). */
@@ -18,18 +19,69 @@ typedef struct {
     double du[DIM][DIM]; /* du[a][b] = sum (u_j - u_i)_a (r_ji)_b F V_j */
 } neighbour_sums;
 
-static inline void neighbour_sums_add(neighbour_sums *s, const pair *pr, double w, double vol_j,
-                                      double drho, vec du)
+/* neighbour_sums lane by lane (core/pair_block.h): lane l sums the row's entries n = l mod
+ * PAIR_BLOCK. L is symmetric: its upper triangle is summed and mirrored. */
+typedef struct {
+    pair_block l[DIM][DIM], grad_one[DIM], w, wv, drho[DIM], du[DIM][DIM];
+} neighbour_block_sums;
+
+/* A block of pairs' terms of Eqs. (10), (11) and (A.2); each has a factor F or W, zero where
+ * the entry does not count (pair_block_geometry). */
+PAIR_BLOCK_INLINE void neighbour_block_sums_add(neighbour_block_sums *s,
+                                                const pair_block_geometry *b, pair_block vol_j,
+                                                pair_block drho, const pair_block du[DIM])
 {
-    double fv = pr->f * vol_j;
-    mat_add_outer(&s->l, fv, pr->r_ji, pr->r_ji);
-    s->grad_one = vec_axpy(s->grad_one, fv, pr->r_ji);
-    s->w += w;
-    s->wv += w * vol_j;
-    s->drho = vec_axpy(s->drho, drho * fv, pr->r_ji);
-    for (int a = 0; a < DIM; a++)
-        for (int b = 0; b < DIM; b++) s->du[a][b] += du.c[a] * pr->r_ji.c[b] * fv;
+    pair_block fv = b->f * vol_j;
+    for (int a = 0; a < DIM; a++) {
+        pair_block fr = fv * b->r_ji[a];
+        for (int c = a; c < DIM; c++) s->l[a][c] += fr * b->r_ji[c];
+        s->grad_one[a] += fr;
+        s->drho[a] += drho * fr;
+        for (int c = 0; c < DIM; c++) s->du[c][a] += du[c] * fr;
+    }
+    s->w += b->w;
+    s->wv += b->w * vol_j;
 }
+
+PAIR_BLOCK_INLINE neighbour_sums neighbour_sums_total(const neighbour_block_sums *bs)
+{
+    neighbour_sums s;
+    for (int a = 0; a < DIM; a++) {
+        for (int c = a; c < DIM; c++) s.l.a[a][c] = s.l.a[c][a] = block_total(bs->l[a][c]);
+        s.grad_one.c[a] = block_total(bs->grad_one[a]);
+        s.drho.c[a] = block_total(bs->drho[a]);
+        for (int c = 0; c < DIM; c++) s.du[a][c] = block_total(bs->du[a][c]);
+    }
+    s.w = block_total(bs->w);
+    s.wv = block_total(bs->wv);
+    return s;
+}
+
+/* Particle i's neighbour sums over its row, a block of entries at a time. */
+PAIR_BLOCK_INLINE neighbour_sums geometry_sums(const kernel *k, const particles *p,
+                                               const neighbour_list *nl, size_t i)
+{
+    vec xi = vec_load(p->x, i), ui = vec_load(p->u, i);
+    /* a row that reaches no ghost has no wall image to ask for its u_wall */
+    bool ghosts = neighbour_row_has_ghosts(nl, i);
+    PAIR_ROW(k, p->x, nl, i, xi, row);
+    neighbour_block_sums bs;
+    __builtin_memset(&bs, 0, sizeof bs);
+    pair_block_geometry b;
+    FOR_EACH_PAIR_BLOCK_OF_ROW(&row, b)
+    {
+        pair_block du[DIM];
+        for (int d = 0; d < DIM; d++)
+            du[d] = pair_block_viscous_velocity(p, &b, d, ghosts) - ui.c[d];
+        pair_block drho = pair_block_gather(p->rho, b.j) - p->rho[i];
+        neighbour_block_sums_add(&bs, &b, pair_block_gather(p->vol, b.j), drho, du);
+    }
+    return neighbour_sums_total(&bs);
+}
+
+PAIR_BLOCK_FORMS(neighbour_sums, geometry_sums,
+                 (const kernel *k, const particles *p, const neighbour_list *nl, size_t i),
+                 (k, p, nl, i))
 
 /* ||D|| = sqrt(2 D:D), D the symmetric part of the velocity gradient G[a][b] = du_a/dx_b */
 static inline double strain_norm(double g[DIM][DIM])
@@ -47,19 +99,11 @@ void fields_geometry(const physics_params *pp, const tank *t, particles *p,
                      const neighbour_list *nl)
 {
     const kernel *k = &pp->k;
+    __auto_type sums_of = geometry_sums_form();
 #pragma omp parallel for schedule(static)
     for (size_t i = 0; i < p->n_fluid; i++) {
         vec xi = vec_load(p->x, i), ui = vec_load(p->u, i);
-        double rhoi = p->rho[i];
-        neighbour_sums s = {mat_zero(), vec_zero(), 0.0, 0.0, vec_zero(), {{0}}};
-        /* a row that reaches no ghost has no wall image to ask for its u_wall */
-        bool ghosts = neighbour_row_has_ghosts(nl, i);
-        pair pr;
-        FOR_EACH_PAIR (k, p->x, nl, i, xi, pr) {
-            size_t j = pr.j;
-            vec uj = ghosts ? particle_viscous_velocity(p, j) : vec_load(p->u, j);
-            neighbour_sums_add(&s, &pr, pr.w, p->vol[j], p->rho[j] - rhoi, vec_sub(uj, ui));
-        }
+        neighbour_sums s = sums_of(k, p, nl, i);
         double lambda = mat_min_eigenvalue(&s.l);
         p->lambda[i] = lambda;
         p->kernel_sum[i] = s.w + k->norm; /* self term W(0) */
@@ -130,29 +174,73 @@ void fields_shifting_and_correction(const physics_params *pp, particles *p,
     }
 }
 
-/* D^rho and D^m of Eq. (5), frozen over the step. The mass diffusion runs between fluid
- * particles only: no mass crosses a wall, and the total mass stays exact. */
+/* The sums of D^rho and D^m of particle i (Eq. 5) and the rate of diffusion_stability_factor. */
+typedef struct {
+    double rho, m, rate;
+} diffusion_sums;
+
+/* Particle i's diffusion sums over its row, a block of entries at a time (core/pair_block.h):
+ * harmonic_mean_capped, diffusion_rate_pair, diffusion_rho_pair and mass_diffusion_pair
+ * (physics/), written out in blocks operation by operation. The mass diffusion runs between
+ * fluid particles only: no mass crosses a wall, and the total mass stays exact. */
+PAIR_BLOCK_INLINE diffusion_sums diffusion_sums_of(const physics_params *pp, const particles *p,
+                                                   const neighbour_list *nl, size_t i,
+                                                   const bool mass)
+{
+    const kernel *k = &pp->k;
+    vec xi = vec_load(p->x, i), gi = vec_load(p->grad_rho, i);
+    double rhoi = p->rho[i], nui = p->nu_delta[i], mi = p->m[i], vi = p->vol[i];
+    bool ghosts = neighbour_row_has_ghosts(nl, i);
+    PAIR_ROW(k, p->x, nl, i, xi, row);
+    pair_block sum_rho = {0}, sum_m = {0}, rate = {0};
+    pair_block_geometry b;
+    FOR_EACH_PAIR_BLOCK_OF_ROW(&row, b)
+    {
+        pair_block vj = pair_block_gather(p->vol, b.j), nuj = pair_block_gather(p->nu_delta, b.j);
+        /* harmonic_mean_capped */
+        pair_block nu_sum = nui + nuj;
+        pair_block delta =
+            pair_block_select(nu_sum > 0.0, 2.0 * nui * nuj / nu_sum, pair_block_broadcast(0.0));
+        delta =
+            pair_block_select(delta < pp->delta_cap, delta, pair_block_broadcast(pp->delta_cap));
+        /* diffusion_rate_pair, diffusion_rho_pair */
+        pair_block rate_ij = 2.0 * delta * b.f * vj;
+        pair_block linear = pair_block_broadcast(0.0);
+        for (int d = 0; d < DIM; d++)
+            linear += (gi.c[d] + pair_block_gather(p->grad_rho[d], b.j)) * b.r_ji[d];
+        linear = 0.5 * linear;
+        sum_rho += rate_ij * ((pair_block_gather(p->rho, b.j) - rhoi) - linear);
+        rate += rate_ij;
+        if (mass) { /* mass_diffusion_pair, times 0 for a wall image */
+            pair_block term = 2.0 * pp->delta_c0_h * (pair_block_gather(p->m, b.j) - mi) * b.f;
+            pair_block root = vi * vj;
+            for (int l = 0; l < PAIR_BLOCK; l++) root[l] = __builtin_sqrt(root[l]);
+            term *= root;
+            if (ghosts)
+                for (int l = 0; l < PAIR_BLOCK; l++)
+                    if (particle_is_wall_image(p, (size_t)b.j[l])) term[l] = 0.0;
+            sum_m += term;
+        }
+    }
+    diffusion_sums s = {block_total(sum_rho), block_total(sum_m), block_total(rate)};
+    return s;
+}
+
+PAIR_BLOCK_FORMS(diffusion_sums, diffusion_sums_of,
+                 (const physics_params *pp, const particles *p, const neighbour_list *nl, size_t i,
+                  bool mass),
+                 (pp, p, nl, i, mass))
+
+/* D^rho and D^m of Eq. (5), frozen over the step. */
 static void diffusion(const physics_params *pp, particles *p, const neighbour_list *nl,
                       const bool mass, double dt)
 {
-    const kernel *k = &pp->k;
+    __auto_type sums_of = diffusion_sums_of_form();
 #pragma omp parallel for schedule(static)
     for (size_t i = 0; i < p->n_fluid; i++) {
-        vec xi = vec_load(p->x, i), gi = vec_load(p->grad_rho, i);
-        double rhoi = p->rho[i], nui = p->nu_delta[i], mi = p->m[i], vi = p->vol[i];
-        double sum_rho = 0.0, sum_m = 0.0, rate = 0.0;
-        pair pr;
-        FOR_EACH_PAIR (k, p->x, nl, i, xi, pr) {
-            size_t j = pr.j;
-            double delta_ij = harmonic_mean_capped(nui, p->nu_delta[j], pp->delta_cap);
-            sum_rho += diffusion_rho_pair(delta_ij, rhoi, p->rho[j], gi, vec_load(p->grad_rho, j),
-                                          pr.r_ji, pr.f, p->vol[j]);
-            rate += diffusion_rate_pair(delta_ij, pr.f, p->vol[j]);
-            if (mass && !particle_is_wall_image(p, j))
-                sum_m += mass_diffusion_pair(pp->delta_c0_h, mi, p->m[j], pr.f, vi, p->vol[j]);
-        }
-        p->diff_rho[i] = sum_rho * diffusion_stability_factor(rate, dt);
-        p->diff_m[i] = sum_m;
+        diffusion_sums s = sums_of(pp, p, nl, i, mass);
+        p->diff_rho[i] = s.rho * diffusion_stability_factor(s.rate, dt);
+        p->diff_m[i] = s.m;
     }
 }
 

@@ -1,0 +1,122 @@
+/* pair_block: a row's pairs PAIR_BLOCK entries at a time (GCC vector extensions), for the sums
+ * of a pass over a row's geometry (core/pair.h's columns). Lane l of a block sum adds the row's
+ * entries n = l, l + PAIR_BLOCK, l + 2 PAIR_BLOCK, ... in order, and block_total adds the lanes
+ * in order at the end: the same operations on every processor, whether a function that uses it
+ * is built for AVX-512 (one register a block), AVX2 (two) or the baseline (four SSE halves), so
+ * every form gives the same bits. */
+#ifndef VCSPH_PAIR_BLOCK_H
+#define VCSPH_PAIR_BLOCK_H
+
+#include "core/lanes_switch.h"
+#include "core/pair.h"
+#include "core/particles.h"
+
+/* Blocks are passed between inline functions only, never across a call, so GCC's note on the
+ * ABI of wide vector arguments does not apply. */
+#pragma GCC diagnostic ignored "-Wpsabi"
+#define PAIR_BLOCK_INLINE __attribute__((always_inline)) static inline
+
+typedef double pair_block __attribute__((vector_size(PAIR_BLOCK * sizeof(double))));
+_Static_assert(PAIR_BLOCK == 8, "core/pair.c writes a block's eight elements one by one");
+typedef int64_t pair_block_mask __attribute__((vector_size(PAIR_BLOCK * sizeof(double))));
+
+/* Entries n0 .. n0 + PAIR_BLOCK - 1 of a row's geometry. An entry past the row's end has
+ * W = F = 0, and so has one beyond 2h (pair_row_of: the kernel's own zero at q >= 2; where
+ * r^2 >= (2h)^2 but r / h rounds just below 2, a value of order 1e-48 of the kernel's peak,
+ * where the pair loops of core/pair.h skip the entry). So a term with a factor W or F adds an
+ * exact zero there (every value in the columns is a number, and a sum that starts at +0 never
+ * holds -0): the sums need no mask. */
+typedef struct {
+    const int32_t *j;         /* the block's neighbours: into the row, or `last` */
+    int32_t last[PAIR_BLOCK]; /* the row's last block, its last entry repeated past the end */
+    pair_block r_ji[DIM], w, f;
+} pair_block_geometry;
+
+PAIR_BLOCK_INLINE pair_block pair_block_column(const pair_row *rw, int column, int32_t n0)
+{
+    pair_block b;
+    __builtin_memcpy(&b, &rw->columns[(size_t)column * rw->stride + (size_t)n0], sizeof b);
+    return b;
+}
+
+/* The block of entries from n0 (a multiple of PAIR_BLOCK below the row's count). */
+PAIR_BLOCK_INLINE void pair_block_at(const pair_row *rw, int32_t n0, pair_block_geometry *b)
+{
+    if (n0 + PAIR_BLOCK <= rw->count) {
+        b->j = rw->row + n0;
+    } else {
+        for (int l = 0; l < PAIR_BLOCK; l++)
+            b->last[l] = rw->row[n0 + l < rw->count ? n0 + l : rw->count - 1];
+        b->j = b->last;
+    }
+    for (int d = 0; d < DIM; d++) b->r_ji[d] = pair_block_column(rw, d, n0);
+    b->w = pair_block_column(rw, PAIR_W, n0);
+    b->f = pair_block_column(rw, PAIR_F, n0);
+}
+
+/* The row's blocks, in order: `b` (declared by the caller) for n0 = 0, PAIR_BLOCK, ... */
+#define FOR_EACH_PAIR_BLOCK_OF_ROW(rw, b)                                                          \
+    for (int32_t b##_n0 = 0; b##_n0 < (rw)->count; b##_n0 += PAIR_BLOCK)                           \
+        if (pair_block_at(rw, b##_n0, &(b)), 0) {                                                  \
+        } else
+
+/* a[j[0]], ..., a[j[PAIR_BLOCK - 1]], element by element into the register */
+PAIR_BLOCK_INLINE pair_block pair_block_gather(const double *a, const int32_t *j)
+{
+    pair_block r;
+    for (int l = 0; l < PAIR_BLOCK; l++) r[l] = a[j[l]];
+    return r;
+}
+
+PAIR_BLOCK_INLINE pair_block pair_block_broadcast(double a) { return (pair_block){0} + a; }
+
+/* m ? a : b, lane by lane */
+PAIR_BLOCK_INLINE pair_block pair_block_select(pair_block_mask m, pair_block a, pair_block b)
+{
+    return (pair_block)((m & (pair_block_mask)a) | (~m & (pair_block_mask)b));
+}
+
+/* The lanes of a block sum added in order: the row's sum */
+PAIR_BLOCK_INLINE double block_total(pair_block s)
+{
+    double total = s[0];
+    for (int l = 1; l < PAIR_BLOCK; l++) total += s[l];
+    return total;
+}
+
+/* The viscous term's velocity (particle_viscous_velocity) of the block's neighbours, component
+ * d: their own, a wall image's u_wall, looked for only where the row reaches a ghost. */
+PAIR_BLOCK_INLINE pair_block pair_block_viscous_velocity(const particles *p,
+                                                         const pair_block_geometry *b, int d,
+                                                         bool ghosts)
+{
+    pair_block u = pair_block_gather(p->u[d], b->j);
+    if (ghosts) {
+        size_t images = particles_images_begin(p);
+        for (int l = 0; l < PAIR_BLOCK; l++)
+            if ((size_t)b->j[l] >= images) u[l] = p->u_wall[d][(size_t)b->j[l] - p->n_fluid];
+    }
+    return u;
+}
+
+/* NAME built three times from the always_inline function NAME (which returns TYPE and takes
+ * PARAMS, called with ARGS): for AVX-512 (x86-64-v4, one register a block), AVX2 (x86-64-v3)
+ * and the baseline (x86-64-v2), and NAME_form(), the one lanes_width allows. The same
+ * operations in each, so the same bits (tests/test_lanes.c runs them all). */
+#define PAIR_BLOCK_FORMS(TYPE, NAME, PARAMS, ARGS)                                                 \
+    __attribute__((target("arch=x86-64-v4"))) static TYPE NAME##_avx512 PARAMS                     \
+    {                                                                                              \
+        return NAME ARGS;                                                                          \
+    }                                                                                              \
+    __attribute__((target("arch=x86-64-v3"))) static TYPE NAME##_avx2 PARAMS { return NAME ARGS; } \
+    static TYPE NAME##_baseline PARAMS { return NAME ARGS; }                                       \
+    static TYPE(*NAME##_form(void)) PARAMS                                                         \
+    {                                                                                              \
+        switch (lanes_width()) {                                                                   \
+        case 8: return NAME##_avx512;                                                              \
+        case 4: return NAME##_avx2;                                                                \
+        default: return NAME##_baseline;                                                           \
+        }                                                                                          \
+    }
+
+#endif

@@ -1,0 +1,129 @@
+/* The passes that sum a row in blocks of eight entries (core/pair_block.h: the geometry pass and
+ * the density and mass diffusion, scheme/fields.c) sum the terms of their pair functions: on a
+ * disordered block of liquid in a tank (wall ghosts, random velocities), each particle's kernel
+ * sums and diffusion terms against the same terms summed pair by pair in the row's order with
+ * the functions of src/physics. The two orders of summation differ by round-off only: at most
+ * 2 (n - 1) eps sum |term| for n terms (the bound of recursive summation, Higham, Accuracy and
+ * Stability of Numerical Algorithms, eq. 4.4, for each order). The forms of the block sums
+ * against each other, bit for bit, are test_lanes'. */
+#include "core/pair.h"
+#include "physics/ale.h"
+#include "physics/diffusion.h"
+#include "physics/viscosity.h"
+#include "scheme/solver.h"
+
+#include <float.h>
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <cmocka.h>
+
+#include "disordered_block.h"
+
+/* A sum of terms kept with what its round-off may be: the number of terms and sum |term|. */
+typedef struct {
+    double sum, magnitude;
+    int terms;
+} checked_sum;
+
+static void checked_add(checked_sum *s, double term)
+{
+    s->sum += term;
+    s->magnitude += fabs(term);
+    s->terms++;
+}
+
+/* Two orders of the same terms, scaled alike by `scale`, may differ by this much. */
+static double reorder_bound(const checked_sum *s, double scale)
+{
+    return 2.0 * (s->terms > 0 ? s->terms - 1 : 0) * DBL_EPSILON * s->magnitude * fabs(scale);
+}
+
+static void assert_close(double got, double want, double bound, const char *what, size_t i)
+{
+    if (!(fabs(got - want) <= bound))
+        fail_msg("%s of particle %zu: %.17g, pair by pair %.17g (round-off bound %.3g)", what, i,
+                 got, want, bound);
+}
+
+/* ALE_BLOCK_CASE (delta-plus-ALE: eta = 0 at the start, constant masses) with its scheme
+ * replaced by `scheme` */
+static void block_with_scheme(const char *scheme, config *cfg, solver *s)
+{
+    static const char plus_ale[] = "scheme = delta-plus-ale\n";
+    const char *at = strstr(ALE_BLOCK_CASE, plus_ale);
+    assert_non_null(at);
+    char text[sizeof ALE_BLOCK_CASE + 64];
+    snprintf(text, sizeof text, "%.*sscheme = %s\n%s", (int)(at - ALE_BLOCK_CASE), ALE_BLOCK_CASE,
+             scheme, at + strlen(plus_ale));
+    disordered_block(text, 0.2, 7, cfg, s);
+}
+
+static void block_sums_follow_the_pair_functions(const char *scheme, bool mass)
+{
+    config cfg;
+    solver s;
+    block_with_scheme(scheme, &cfg, &s);
+    const physics_params *pp = &s.pp;
+    const particles *p = &s.p;
+    neighbour_list rows = neighbours_near(&s.nl);
+    assert_true(pp->c_delta > 0.0);
+    assert_int_equal(s.eta_control.eta > 0.0, mass);
+    for (size_t i = 0; i < p->n_fluid; i++) {
+        vec xi = vec_load(p->x, i), gi = vec_load(p->grad_rho, i);
+        double rhoi = p->rho[i], nui = p->nu_delta[i], mi = p->m[i], vi = p->vol[i];
+        checked_sum w = {0}, wv = {0}, rho = {0}, m = {0}, rate = {0};
+        pair pr;
+        FOR_EACH_PAIR (&pp->k, p->x, &rows, i, xi, pr) {
+            size_t j = pr.j;
+            checked_add(&w, pr.w);
+            checked_add(&wv, pr.w * p->vol[j]);
+            double delta_ij = harmonic_mean_capped(nui, p->nu_delta[j], pp->delta_cap);
+            checked_add(&rho,
+                        diffusion_rho_pair(delta_ij, rhoi, p->rho[j], gi, vec_load(p->grad_rho, j),
+                                           pr.r_ji, pr.f, p->vol[j]));
+            checked_add(&rate, diffusion_rate_pair(delta_ij, pr.f, p->vol[j]));
+            if (mass && !particle_is_wall_image(p, j))
+                checked_add(&m,
+                            mass_diffusion_pair(pp->delta_c0_h, mi, p->m[j], pr.f, vi, p->vol[j]));
+        }
+        assert_close(p->kernel_sum[i], w.sum + pp->k.norm, reorder_bound(&w, 1.0), "kernel sum", i);
+        assert_close(p->gamma[i], wv.sum + pp->k.norm * vi, reorder_bound(&wv, 1.0), "gamma", i);
+        /* the stability factor, 1 / (rate dt) or 1, takes the rate's round-off too */
+        double factor = diffusion_stability_factor(rate.sum, s.dt);
+        double rate_error = factor < 1.0 ? reorder_bound(&rate, 1.0) / rate.sum : 0.0;
+        assert_close(p->diff_rho[i], rho.sum * factor,
+                     reorder_bound(&rho, factor) + fabs(rho.sum * factor) * 2.0 * rate_error,
+                     "D^rho", i);
+        assert_close(p->diff_m[i], m.sum, reorder_bound(&m, 1.0), "D^m", i);
+    }
+    solver_free(&s);
+}
+
+/* delta-plus-ALE at the start (eta = 0): the density diffusion */
+static void test_delta_plus_ale(void **state)
+{
+    (void)state;
+    block_sums_follow_the_pair_functions("delta-plus-ale", false);
+}
+
+/* delta-ALE (eta = 1, variable masses): the mass diffusion too */
+static void test_delta_ale(void **state)
+{
+    (void)state;
+    block_sums_follow_the_pair_functions("delta-ale", true);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_delta_plus_ale),
+        cmocka_unit_test(test_delta_ale),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
