@@ -1,16 +1,22 @@
-/* The passes that sum a row in blocks of eight entries (core/pair_block.h: the geometry pass and
- * the density and mass diffusion, scheme/fields.c) sum the terms of their pair functions: on a
- * disordered block of liquid in a tank (wall ghosts, random velocities), each particle's kernel
- * sums and diffusion terms against the same terms summed pair by pair in the row's order with
- * the functions of src/physics. The two orders of summation differ by round-off only: at most
+/* The passes that sum a row in blocks of eight entries (core/pair_block.h: the geometry pass,
+ * the density and mass diffusion, the shifting and the correction velocity, scheme/fields.c)
+ * sum the terms of their pair functions: on a disordered block of liquid in a tank (wall
+ * ghosts, random velocities), each particle's kernel sums, diffusion terms, shifting and
+ * correction velocities against the same terms summed pair by pair in the row's order with the
+ * functions of src/physics. The two orders of summation differ by round-off only: at most
  * 2 (n - 1) eps sum |term| for n terms (the bound of recursive summation, Higham, Accuracy and
  * Stability of Numerical Algorithms, eq. 4.4, for each order). The forms of the block sums
  * against each other, bit for bit, are test_lanes'. */
 #include "core/pair.h"
+#include "diag/freesurface.h"
 #include "physics/ale.h"
 #include "physics/diffusion.h"
+#include "physics/shifting.h"
 #include "physics/viscosity.h"
+#include "physics/volume_correction.h"
+#include "scheme/fields.h"
 #include "scheme/solver.h"
+#include "scheme/volume_correction.h"
 
 #include <float.h>
 #include <math.h>
@@ -49,6 +55,52 @@ static void assert_close(double got, double want, double bound, const char *what
     if (!(fabs(got - want) <= bound))
         fail_msg("%s of particle %zu: %.17g, pair by pair %.17g (round-off bound %.3g)", what, i,
                  got, want, bound);
+}
+
+/* The shifting velocity (Eq. 7) and the correction velocity from sums of shifting_pair and
+ * volume_correction_pair, pair by pair; what follows the sums (the compression gradient's
+ * floor, the limits, the surface's tangent) moves a difference of the sums by at most twice
+ * its size, times h U_max. */
+static void shifting_and_correction_follow_their_pair_functions(solver *s)
+{
+    const physics_params *pp = &s->pp;
+    particles *p = &s->p;
+    neighbour_list rows = neighbours_near(&s->nl);
+    fields_shifting_and_correction(pp, p, &rows, true, true);
+    for (size_t i = 0; i < p->n_fluid; i++) {
+        if (p->lambda[i] < SHIFTING_LAMBDA_MIN) continue;
+        vec xi = vec_load(p->x, i), ui = vec_load(p->u, i);
+        checked_sum shifting[DIM] = {{0}}, correction[DIM] = {{0}};
+        double max_relative2 = 0.0;
+        pair pr;
+        FOR_EACH_PAIR (&pp->k, p->x, &rows, i, xi, pr) {
+            vec sh = shifting_pair(pr.w, pp->w_dr, pr.r_ji, pr.f, p->vol[pr.j]);
+            vec co = volume_correction_pair(p->volume_mismatch[i], p->volume_mismatch[pr.j],
+                                            pr.r_ji, pr.f, p->vol[pr.j]);
+            for (int d = 0; d < DIM; d++) {
+                checked_add(&shifting[d], sh.c[d]);
+                checked_add(&correction[d], co.c[d]);
+            }
+            double rel2 = vec_norm2(vec_sub(vec_load(p->u, pr.j), ui));
+            if (rel2 > max_relative2) max_relative2 = rel2;
+        }
+        vec shifting_sum, correction_sum;
+        double shifting_bound = 0.0, correction_bound = 0.0, scale = pp->k.h * pp->shift_u_max;
+        for (int d = 0; d < DIM; d++) {
+            shifting_sum.c[d] = shifting[d].sum;
+            correction_sum.c[d] = correction[d].sum;
+            shifting_bound += 2.0 * reorder_bound(&shifting[d], scale);
+            correction_bound += 2.0 * reorder_bound(&correction[d], scale);
+        }
+        vec du = gradient_beyond_floor(shifting_sum, fields_compression_gradient(p, i));
+        du = shifting_limit(vec_scale(du, -scale), sqrt(max_relative2), pp->shift_u_max);
+        if (p->surface[i] != SURFACE_INTERIOR) du = shifting_tangential(du, vec_load(p->normal, i));
+        vec dv = volume_correction_velocity_from(pp, p, i, correction_sum);
+        for (int d = 0; d < DIM; d++) {
+            assert_close(p->shift[d][i], du.c[d], shifting_bound, "shifting", i);
+            assert_close(p->correction[d][i], dv.c[d], correction_bound, "correction", i);
+        }
+    }
 }
 
 /* ALE_BLOCK_CASE (delta-plus-ALE: eta = 0 at the start, constant masses) with its scheme
@@ -102,6 +154,7 @@ static void block_sums_follow_the_pair_functions(const char *scheme, bool mass)
                      "D^rho", i);
         assert_close(p->diff_m[i], m.sum, reorder_bound(&m, 1.0), "D^m", i);
     }
+    shifting_and_correction_follow_their_pair_functions(&s);
     solver_free(&s);
 }
 

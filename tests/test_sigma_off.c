@@ -20,7 +20,9 @@
  * round-off, 2e-9 of a value at most), and an eighth time when the geometry pass and the
  * density diffusion began to sum each row in eight interleaved partial sums (src/core/pair.c,
  * src/core/pair_block.h, src/scheme/fields.c: the sums' order, round-off, 2e-8 of a value at
- * most). Each line is one particle, in C's exact %a notation. */
+ * most), and a ninth time when the shifting and the correction velocity did the same
+ * (src/scheme/fields.c, src/scheme/volume_correction.*, src/core/pair_block.h). Each line is one
+ * particle, in C's exact %a notation. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>

@@ -29,6 +29,8 @@ typedef int64_t pair_block_mask __attribute__((vector_size(PAIR_BLOCK * sizeof(d
 typedef struct {
     const int32_t *j;         /* the block's neighbours: into the row, or `last` */
     int32_t last[PAIR_BLOCK]; /* the row's last block, its last entry repeated past the end */
+    pair_block_mask inside;   /* -1 where the entry's r^2 is below (2h)^2 (past the row's end too,
+                                 where the row's last entry repeats), else 0 */
     pair_block r_ji[DIM], w, f;
 } pair_block_geometry;
 
@@ -49,6 +51,7 @@ PAIR_BLOCK_INLINE void pair_block_at(const pair_row *rw, int32_t n0, pair_block_
             b->last[l] = rw->row[n0 + l < rw->count ? n0 + l : rw->count - 1];
         b->j = b->last;
     }
+    b->inside = pair_block_column(rw, PAIR_R2, n0) < rw->support2;
     for (int d = 0; d < DIM; d++) b->r_ji[d] = pair_block_column(rw, d, n0);
     b->w = pair_block_column(rw, PAIR_W, n0);
     b->f = pair_block_column(rw, PAIR_F, n0);

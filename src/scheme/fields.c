@@ -132,25 +132,71 @@ void fields_geometry(const physics_params *pp, const tank *t, particles *p,
     }
 }
 
+/* The sums over particle i's row of the shifting (Eq. 7: sum_j [1 + R (W_ij/W(dr))^4]
+ * grad_i W_ij V_j, and max_j |u_j - u_i|^2 for its limit) and of the volume correction
+ * (sum_j (e_j - e_i) grad_i W_ij V_j). */
+typedef struct {
+    vec shifting, correction;
+    double max_relative2;
+} shift_sums;
+
+/* shift_sums a block of entries at a time (core/pair_block.h): shifting_pair and
+ * volume_correction_pair (src/physics) written out in blocks. The maximum takes only the pairs
+ * within 2h, as the pair loops do (a maximum does not depend on the order). */
+PAIR_BLOCK_INLINE shift_sums shift_sums_of(const physics_params *pp, const particles *p,
+                                           const neighbour_list *nl, size_t i, bool shift,
+                                           bool correct)
+{
+    vec xi = vec_load(p->x, i), ui = vec_load(p->u, i);
+    double ei = p->volume_mismatch[i];
+    PAIR_ROW(&pp->k, p->x, nl, i, xi, row);
+    pair_block shifting[DIM] = {{0}}, correction[DIM] = {{0}}, max_relative2 = {0};
+    pair_block_geometry b;
+    FOR_EACH_PAIR_BLOCK_OF_ROW(&row, b)
+    {
+        pair_block vj = pair_block_gather(p->vol, b.j);
+        if (shift) { /* shifting_pair */
+            pair_block q = b.w / pp->w_dr, q2 = q * q;
+            pair_block scale = (1.0 + SHIFTING_R * q2 * q2) * b.f * vj;
+            pair_block rel2 = pair_block_broadcast(0.0);
+            for (int d = 0; d < DIM; d++) {
+                shifting[d] += b.r_ji[d] * scale;
+                pair_block u_ji = pair_block_gather(p->u[d], b.j) - ui.c[d];
+                rel2 += u_ji * u_ji;
+            }
+            rel2 = (pair_block)(b.inside & (pair_block_mask)rel2); /* |u_ji|^2 >= 0: 0 drops */
+            max_relative2 = pair_block_select(rel2 > max_relative2, rel2, max_relative2);
+        }
+        if (correct) { /* volume_correction_pair */
+            pair_block scale = (pair_block_gather(p->volume_mismatch, b.j) - ei) * b.f * vj;
+            for (int d = 0; d < DIM; d++) correction[d] += b.r_ji[d] * scale;
+        }
+    }
+    shift_sums s = {.max_relative2 = 0.0};
+    for (int d = 0; d < DIM; d++) {
+        s.shifting.c[d] = block_total(shifting[d]);
+        s.correction.c[d] = block_total(correction[d]);
+    }
+    for (int l = 0; l < PAIR_BLOCK; l++)
+        if (max_relative2[l] > s.max_relative2) s.max_relative2 = max_relative2[l];
+    return s;
+}
+
+PAIR_BLOCK_FORMS(shift_sums, shift_sums_of,
+                 (const physics_params *pp, const particles *p, const neighbour_list *nl, size_t i,
+                  bool shift, bool correct),
+                 (pp, p, nl, i, shift, correct))
+
 /* Eq. (7): du*_i = -xi h U_max sum_j [1 + R (W_ij/W(dr))^4] grad_i W_ij V_j, the sum taken
  * beyond the floor of the liquid's own compression gradient (shifting.h), limited, then
  * made tangential in S_F; the pass below switches it off where lambda < 0.4 (drops and jets:
  * no reliable normal; theory §4, inferred from Sun et al. 2017). */
 static vec shifting_velocity(const physics_params *pp, const particles *p, size_t i,
-                             const pair_row *row)
+                             const shift_sums *s)
 {
-    const kernel *k = &pp->k;
-    vec ui = vec_load(p->u, i), sum = vec_zero();
-    double max_relative2 = 0.0;
-    pair pr;
-    FOR_EACH_PAIR_OF_ROW (row, pr) {
-        sum = vec_add(sum, shifting_pair(pr.w, pp->w_dr, pr.r_ji, pr.f, p->vol[pr.j]));
-        double rel2 = vec_norm2(vec_sub(vec_load(p->u, pr.j), ui));
-        if (rel2 > max_relative2) max_relative2 = rel2;
-    }
-    sum = gradient_beyond_floor(sum, fields_compression_gradient(p, i));
-    vec du = vec_scale(sum, -k->h * pp->shift_u_max);
-    du = shifting_limit(du, sqrt(max_relative2), pp->shift_u_max);
+    vec sum = gradient_beyond_floor(s->shifting, fields_compression_gradient(p, i));
+    vec du = vec_scale(sum, -pp->k.h * pp->shift_u_max);
+    du = shifting_limit(du, sqrt(s->max_relative2), pp->shift_u_max);
     if (p->surface[i] != SURFACE_INTERIOR)
         return shifting_tangential(du, vec_load(p->normal, i)); /* the surface's */
     return du;
@@ -159,7 +205,7 @@ static vec shifting_velocity(const physics_params *pp, const particles *p, size_
 void fields_shifting_and_correction(const physics_params *pp, particles *p,
                                     const neighbour_list *nl, bool shift, bool correct)
 {
-    const kernel *k = &pp->k;
+    __auto_type sums_of = shift_sums_of_form();
 #pragma omp parallel for schedule(static)
     for (size_t i = 0; i < p->n_fluid; i++) {
         if (p->lambda[i] < SHIFTING_LAMBDA_MIN) { /* neither moves it: no row geometry */
@@ -167,10 +213,10 @@ void fields_shifting_and_correction(const physics_params *pp, particles *p,
             if (correct) vec_store(p->correction, i, vec_zero());
             continue;
         }
-        vec xi = vec_load(p->x, i);
-        PAIR_ROW(k, p->x, nl, i, xi, row);
-        if (shift) vec_store(p->shift, i, shifting_velocity(pp, p, i, &row));
-        if (correct) vec_store(p->correction, i, volume_correction_velocity_of(pp, p, i, &row));
+        shift_sums s = sums_of(pp, p, nl, i, shift, correct);
+        if (shift) vec_store(p->shift, i, shifting_velocity(pp, p, i, &s));
+        if (correct)
+            vec_store(p->correction, i, volume_correction_velocity_from(pp, p, i, s.correction));
     }
 }
 

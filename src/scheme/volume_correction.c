@@ -44,16 +44,8 @@ static void surface_band_mismatch(const kernel *k, particles *p, const neighbour
     }
 }
 
-vec volume_correction_velocity_of(const physics_params *pp, const particles *p, size_t i,
-                                  const pair_row *row)
+vec volume_correction_velocity_from(const physics_params *pp, const particles *p, size_t i, vec sum)
 {
-    vec sum = vec_zero();
-    double ei = p->volume_mismatch[i];
-    pair pr;
-    FOR_EACH_PAIR_OF_ROW (row, pr) {
-        sum = vec_add(
-            sum, volume_correction_pair(ei, p->volume_mismatch[pr.j], pr.r_ji, pr.f, p->vol[pr.j]));
-    }
     /* beyond the compression gradient's floor, as the shifting (shifting.h), and at most
        U_max / 2, Eq. (7)'s cap (no relative-speed bound here) */
     sum = gradient_beyond_floor(sum, fields_compression_gradient(p, i));

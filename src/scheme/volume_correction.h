@@ -22,7 +22,7 @@ typedef struct {
 #define volume_correction_mismatch       DIM_NAME(volume_correction_mismatch)
 #define volume_correction_band           DIM_NAME(volume_correction_band)
 #define volume_correction_ghost_mismatch DIM_NAME(volume_correction_ghost_mismatch)
-#define volume_correction_velocity_of    DIM_NAME(volume_correction_velocity_of)
+#define volume_correction_velocity_from  DIM_NAME(volume_correction_velocity_from)
 #define volume_correction_per_body       DIM_NAME(volume_correction_per_body)
 #define volume_correction_free           DIM_NAME(volume_correction_free)
 
@@ -40,17 +40,17 @@ typedef struct {
  * (rhs.c, physics/volume_correction.h); masses and velocities are left alone.
  * volume_correction_mismatch writes e off S_F, volume_correction_band e in S_F,
  * volume_correction_ghost_mismatch e of the walls' images (after an MPI run's halo has
- * its sources' e), volume_correction_velocity_of dv, volume_correction_per_body the normal
+ * its sources' e), volume_correction_velocity_from dv, volume_correction_per_body the normal
  * component in S_F (the bodies' sums through d, NULL on one process; returns 0,
  * or -1 when out of memory). */
 void volume_correction_mismatch(const physics_params *pp, particles *p);
 void volume_correction_band(const physics_params *pp, particles *p, const neighbour_list *nl);
 void volume_correction_ghost_mismatch(particles *p);
-/* dv of fluid particle i from its row's geometry, for lambda >= 0.4 (below, the pass sets 0
- * without a row); the pass runs it beside the shifting over the same row
- * (fields_shifting_and_correction, fields.h). */
-vec volume_correction_velocity_of(const physics_params *pp, const particles *p, size_t i,
-                                  const pair_row *row);
+/* dv of fluid particle i, for lambda >= 0.4 (below, the pass sets 0 without a row), from its
+ * sum over its row of sum_j (e_j - e_i) grad_i W_ij V_j (volume_correction_pair), which the
+ * pass sums beside the shifting over the same row (fields_shifting_and_correction, fields.h). */
+vec volume_correction_velocity_from(const physics_params *pp, const particles *p, size_t i,
+                                    vec sum);
 int volume_correction_per_body(particles *p, const bodies *b, const bodies_domain *d,
                                volume_correction_work *w);
 void volume_correction_free(volume_correction_work *w);
