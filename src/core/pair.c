@@ -30,13 +30,14 @@ static void geometry_scalar(const kernel *k, double *const x[DIM], const int32_t
     }
 }
 
+/* From entry PAIR_BLOCK - m on: m ones, then zeros */
+static const double ones_then_zeros[2 * PAIR_BLOCK] = {1, 1, 1, 1, 1, 1, 1, 1,
+                                                       0, 0, 0, 0, 0, 0, 0, 0};
+
 /* pair_of's operations on PAIR_BLOCK entries at once, without its branch: vec_sub, vec_norm2
  * (0 + a_0^2 + a_1^2 (+ a_2^2)), sqrt, kernel_w and kernel_f, lane by lane in the scalar order, so
  * the same bits. Entries past the row's end repeat its last one, with W = F = 0, and land in the
  * columns' padding (stride is a multiple of PAIR_BLOCK). */
-/* From entry PAIR_BLOCK - m on: m ones, then zeros */
-static const double ones_then_zeros[2 * PAIR_BLOCK] = {1, 1, 1, 1, 1, 1, 1, 1,
-                                                       0, 0, 0, 0, 0, 0, 0, 0};
 
 __attribute__((always_inline)) static inline void
 geometry_blocks(const kernel *k, double *const x[DIM], const int32_t *row, int32_t count, vec xi,

@@ -1,5 +1,5 @@
-/* fields: per-step geometry and the frozen diffusion terms; the geometry pass and the diffusion
- * sum each row a block of entries at a time (core/pair_block.h). */
+/* fields: per-step geometry, the shifting and correction velocities and the frozen diffusion
+ * terms, each pass summing a row a block of entries at a time (core/pair_block.h). */
 #include "scheme/fields.h"
 #include "diag/freesurface.h"
 #include "physics/ale.h"
@@ -68,8 +68,7 @@ PAIR_BLOCK_INLINE neighbour_sums geometry_sums(const kernel *k, const particles 
     neighbour_block_sums bs;
     __builtin_memset(&bs, 0, sizeof bs);
     pair_block_geometry b;
-    FOR_EACH_PAIR_BLOCK_OF_ROW(&row, b)
-    {
+    FOR_EACH_PAIR_BLOCK_OF_ROW (&row, b) {
         pair_block du[DIM];
         for (int d = 0; d < DIM; d++)
             du[d] = pair_block_viscous_velocity(p, &b, d, ghosts) - ui.c[d];
@@ -152,8 +151,7 @@ PAIR_BLOCK_INLINE shift_sums shift_sums_of(const physics_params *pp, const parti
     PAIR_ROW(&pp->k, p->x, nl, i, xi, row);
     pair_block shifting[DIM] = {{0}}, correction[DIM] = {{0}}, max_relative2 = {0};
     pair_block_geometry b;
-    FOR_EACH_PAIR_BLOCK_OF_ROW(&row, b)
-    {
+    FOR_EACH_PAIR_BLOCK_OF_ROW (&row, b) {
         pair_block vj = pair_block_gather(p->vol, b.j);
         if (shift) { /* shifting_pair */
             pair_block q = b.w / pp->w_dr, q2 = q * q;
@@ -240,8 +238,7 @@ PAIR_BLOCK_INLINE diffusion_sums diffusion_sums_of(const physics_params *pp, con
     PAIR_ROW(k, p->x, nl, i, xi, row);
     pair_block sum_rho = {0}, sum_m = {0}, rate = {0};
     pair_block_geometry b;
-    FOR_EACH_PAIR_BLOCK_OF_ROW(&row, b)
-    {
+    FOR_EACH_PAIR_BLOCK_OF_ROW (&row, b) {
         pair_block vj = pair_block_gather(p->vol, b.j), nuj = pair_block_gather(p->nu_delta, b.j);
         /* harmonic_mean_capped */
         pair_block nu_sum = nui + nuj;
