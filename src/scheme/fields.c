@@ -223,6 +223,19 @@ typedef struct {
     double rho, m, rate;
 } diffusion_sums;
 
+/* The masses of the block's neighbours; a wall image, which has no mass of its own (the field
+ * is the fluid's and the halo's), reads as m_i, so that its mass diffusion term is an exact 0:
+ * no mass crosses a wall. */
+PAIR_BLOCK_INLINE pair_block fluid_masses(const particles *p, const pair_block_geometry *b,
+                                          double mi, bool ghosts)
+{
+    if (!ghosts) return pair_block_gather(p->m, b->j);
+    pair_block mj;
+    for (int l = 0; l < PAIR_BLOCK; l++)
+        mj[l] = particle_is_wall_image(p, (size_t)b->j[l]) ? mi : p->m[b->j[l]];
+    return mj;
+}
+
 /* Particle i's diffusion sums over its row, a block of entries at a time (core/pair_block.h):
  * harmonic_mean_capped, diffusion_rate_pair, diffusion_rho_pair and mass_diffusion_pair
  * (physics/), written out in blocks operation by operation. The mass diffusion runs between
@@ -254,15 +267,12 @@ PAIR_BLOCK_INLINE diffusion_sums diffusion_sums_of(const physics_params *pp, con
         linear = 0.5 * linear;
         sum_rho += rate_ij * ((pair_block_gather(p->rho, b.j) - rhoi) - linear);
         rate += rate_ij;
-        if (mass) { /* mass_diffusion_pair, times 0 for a wall image */
-            pair_block term = 2.0 * pp->delta_c0_h * (pair_block_gather(p->m, b.j) - mi) * b.f;
+        if (mass) { /* mass_diffusion_pair, 0 for a wall image */
+            pair_block mj = fluid_masses(p, &b, mi, ghosts);
+            pair_block term = 2.0 * pp->delta_c0_h * (mj - mi) * b.f;
             pair_block root = vi * vj;
             for (int l = 0; l < PAIR_BLOCK; l++) root[l] = __builtin_sqrt(root[l]);
-            term *= root;
-            if (ghosts)
-                for (int l = 0; l < PAIR_BLOCK; l++)
-                    if (particle_is_wall_image(p, (size_t)b.j[l])) term[l] = 0.0;
-            sum_m += term;
+            sum_m += term * root;
         }
     }
     diffusion_sums s = {block_total(sum_rho), block_total(sum_m), block_total(rate)};
