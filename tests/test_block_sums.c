@@ -3,10 +3,12 @@
  * sum the terms of their pair functions: on a disordered block of liquid in a tank (wall
  * ghosts, random velocities), each particle's kernel sums, diffusion terms, shifting and
  * correction velocities against the same terms summed pair by pair in the row's order with the
- * functions of src/physics. The two orders of summation differ by round-off only: at most
- * 2 (n - 1) eps sum |term| for n terms (the bound of recursive summation, Higham, Accuracy and
- * Stability of Numerical Algorithms, eq. 4.4, for each order). The forms of the block sums
- * against each other, bit for bit, are test_lanes'. */
+ * functions of src/physics. The two orders of summation differ by round-off only: recursive
+ * summation of n terms errs by at most (n - 1) u sum |term| to first order, u = eps / 2 the unit
+ * round-off (Higham, Accuracy and Stability of Numerical Algorithms, sec. 4.2), so two orders by
+ * twice that; the tests allow 2 (n - 1) eps sum |term|, a factor 2 for the terms' own rounding
+ * and the higher orders. The forms of the block sums against each other, bit for bit, are
+ * test_lanes'. */
 #include "core/pair.h"
 #include "diag/freesurface.h"
 #include "physics/ale.h"
