@@ -150,12 +150,11 @@ int main(int argc, char **argv)
             runs[k].ratio[round] = runs[k].us[round] / runs[0].us[round];
     for (int k = 0; k < sizes; k++) {
         size_run *r = &runs[k];
-        double *ratio = r->ratio;
-        qsort(ratio, ROUNDS, sizeof *ratio, by_value);
+        qsort(r->ratio, ROUNDS, sizeof *r->ratio, by_value);
         qsort(r->us, ROUNDS, sizeof *r->us, by_value);
         printf("%10.0f %8.3f %7.3f - %6.3f %8.0f %10.2f %6.2f - %5.2f %10.1f\n", r->n,
-               r->us[ROUNDS / 2], r->us[0], r->us[ROUNDS - 1], r->bytes, ratio[ROUNDS / 2],
-               ratio[0], ratio[ROUNDS - 1], r->neighbours);
+               r->us[ROUNDS / 2], r->us[0], r->us[ROUNDS - 1], r->bytes, r->ratio[ROUNDS / 2],
+               r->ratio[0], r->ratio[ROUNDS - 1], r->neighbours);
     }
     for (int k = 0; k < sizes; k++) solver_free(&runs[k].s);
     free(runs);

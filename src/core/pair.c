@@ -38,22 +38,16 @@ static const double ones_then_zeros[2 * PAIR_BLOCK] = {1, 1, 1, 1, 1, 1, 1, 1,
  * (0 + a_0^2 + a_1^2 (+ a_2^2)), sqrt, kernel_w and kernel_f, lane by lane in the scalar order, so
  * the same bits. Entries past the row's end repeat its last one, with W = F = 0, and land in the
  * columns' padding (stride is a multiple of PAIR_BLOCK). */
-
 __attribute__((always_inline)) static inline void
 geometry_blocks(const kernel *k, double *const x[DIM], const int32_t *row, int32_t count, vec xi,
                 double *columns, size_t stride)
 {
     for (int32_t n0 = 0; n0 < count; n0 += PAIR_BLOCK) {
-        size_t j[PAIR_BLOCK];
-        for (int l = 0; l < PAIR_BLOCK; l++)
-            j[l] = (size_t)row[n0 + l < count ? n0 + l : count - 1];
+        int32_t last[PAIR_BLOCK];
+        const int32_t *j = pair_block_neighbours(row, count, n0, last);
         pair_block sum = {0}, r;
         for (int d = 0; d < DIM; d++) {
-            /* element by element into a register: through memory, the block's load would wait
-               for eight stores (no store forwarding) */
-            const double *a = x[d];
-            pair_block c = {a[j[0]], a[j[1]], a[j[2]], a[j[3]], a[j[4]], a[j[5]], a[j[6]], a[j[7]]};
-            c -= xi.c[d];
+            pair_block c = pair_block_gather(x[d], j) - xi.c[d];
             sum += c * c;
             memcpy(&columns[(size_t)d * stride + (size_t)n0], &c, sizeof c);
         }

@@ -17,7 +17,7 @@
 #define PAIR_BLOCK_INLINE __attribute__((always_inline)) static inline
 
 typedef double pair_block __attribute__((vector_size(PAIR_BLOCK * sizeof(double))));
-_Static_assert(PAIR_BLOCK == 8, "core/pair.c writes a block's eight elements one by one");
+_Static_assert(PAIR_BLOCK == 8, "core/pair.c's ones_then_zeros holds two blocks of eight");
 typedef int64_t pair_block_mask __attribute__((vector_size(PAIR_BLOCK * sizeof(double))));
 
 /* Entries n0 .. n0 + PAIR_BLOCK - 1 of a row's geometry. An entry past the row's end has
@@ -41,16 +41,21 @@ PAIR_BLOCK_INLINE pair_block pair_block_column(const pair_row *rw, int column, i
     return b;
 }
 
+/* The neighbours of a row's entries n0 .. n0 + PAIR_BLOCK - 1 (n0 < count): the row itself
+ * where the block is whole, else `last`, the row's tail with its last entry repeated (the
+ * columns' padding, pair_row_of). */
+PAIR_BLOCK_INLINE const int32_t *pair_block_neighbours(const int32_t *row, int32_t count,
+                                                       int32_t n0, int32_t last[PAIR_BLOCK])
+{
+    if (n0 + PAIR_BLOCK <= count) return row + n0;
+    for (int l = 0; l < PAIR_BLOCK; l++) last[l] = row[n0 + l < count ? n0 + l : count - 1];
+    return last;
+}
+
 /* The block of entries from n0 (a multiple of PAIR_BLOCK below the row's count). */
 PAIR_BLOCK_INLINE void pair_block_at(const pair_row *rw, int32_t n0, pair_block_geometry *b)
 {
-    if (n0 + PAIR_BLOCK <= rw->count) {
-        b->j = rw->row + n0;
-    } else {
-        for (int l = 0; l < PAIR_BLOCK; l++)
-            b->last[l] = rw->row[n0 + l < rw->count ? n0 + l : rw->count - 1];
-        b->j = b->last;
-    }
+    b->j = pair_block_neighbours(rw->row, rw->count, n0, b->last);
     b->inside = pair_block_column(rw, PAIR_R2, n0) < rw->support2;
     for (int d = 0; d < DIM; d++) b->r_ji[d] = pair_block_column(rw, d, n0);
     b->w = pair_block_column(rw, PAIR_W, n0);
@@ -63,7 +68,8 @@ PAIR_BLOCK_INLINE void pair_block_at(const pair_row *rw, int32_t n0, pair_block_
         if (pair_block_at(rw, b##_n0, &(b)), 0) {                                                  \
         } else
 
-/* a[j[0]], ..., a[j[PAIR_BLOCK - 1]], element by element into the register */
+/* a[j[0]], ..., a[j[PAIR_BLOCK - 1]], element by element into the register: through memory,
+ * the block's load would wait for eight stores (no store forwarding) */
 PAIR_BLOCK_INLINE pair_block pair_block_gather(const double *a, const int32_t *j)
 {
     pair_block r;
@@ -87,19 +93,18 @@ PAIR_BLOCK_INLINE double block_total(pair_block s)
     return total;
 }
 
-/* The viscous term's velocity (particle_viscous_velocity) of the block's neighbours, component
- * d: their own, a wall image's u_wall, looked for only where the row reaches a ghost. */
-PAIR_BLOCK_INLINE pair_block pair_block_viscous_velocity(const particles *p,
-                                                         const pair_block_geometry *b, int d,
-                                                         bool ghosts)
+/* The viscous term's velocity of the block's neighbours, component by component: their own
+ * velocity, or, where the row reaches a ghost, particle_viscous_velocity's (a wall image's
+ * u_wall). */
+PAIR_BLOCK_INLINE void pair_block_viscous_velocity(const particles *p, const pair_block_geometry *b,
+                                                   bool ghosts, pair_block u[DIM])
 {
-    pair_block u = pair_block_gather(p->u[d], b->j);
-    if (ghosts) {
-        size_t images = particles_images_begin(p);
-        for (int l = 0; l < PAIR_BLOCK; l++)
-            if ((size_t)b->j[l] >= images) u[l] = p->u_wall[d][(size_t)b->j[l] - p->n_fluid];
-    }
-    return u;
+    for (int d = 0; d < DIM; d++) u[d] = pair_block_gather(p->u[d], b->j);
+    if (ghosts)
+        for (int l = 0; l < PAIR_BLOCK; l++) {
+            vec v = particle_viscous_velocity(p, (size_t)b->j[l]);
+            for (int d = 0; d < DIM; d++) u[d][l] = v.c[d];
+        }
 }
 
 /* NAME built three times from the always_inline function NAME (which returns TYPE and takes

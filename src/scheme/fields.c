@@ -2,7 +2,6 @@
  * terms, each pass summing a row a block of entries at a time (core/pair_block.h). */
 #include "scheme/fields.h"
 #include "diag/freesurface.h"
-#include "physics/ale.h"
 #include "physics/diffusion.h"
 #include "physics/shifting.h"
 #include "physics/viscosity.h"
@@ -70,8 +69,8 @@ PAIR_BLOCK_INLINE neighbour_sums geometry_sums(const kernel *k, const particles 
     pair_block_geometry b;
     FOR_EACH_PAIR_BLOCK_OF_ROW (&row, b) {
         pair_block du[DIM];
-        for (int d = 0; d < DIM; d++)
-            du[d] = pair_block_viscous_velocity(p, &b, d, ghosts) - ui.c[d];
+        pair_block_viscous_velocity(p, &b, ghosts, du);
+        for (int d = 0; d < DIM; d++) du[d] -= ui.c[d];
         pair_block drho = pair_block_gather(p->rho, b.j) - p->rho[i];
         neighbour_block_sums_add(&bs, &b, pair_block_gather(p->vol, b.j), drho, du);
     }

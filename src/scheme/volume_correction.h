@@ -7,7 +7,6 @@
 
 #include "core/cells.h"
 #include "core/kernel.h"
-#include "core/pair.h"
 #include "core/particles.h"
 #include "scheme/bodies.h"
 #include "scheme/physics_params.h"
