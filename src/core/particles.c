@@ -101,9 +101,9 @@ size_t particles_bytes_sources_only(void) { return slot_bytes(FIELD_SOURCES_ONLY
 
 size_t particles_bytes_ghosts_only(void) { return slot_bytes(FIELD_GHOSTS_ONLY); }
 
-/* The state is reordered through a scratch array of doubles. */
+/* The state is reordered through a scratch array of doubles, eight bytes an element. */
 #define FITS_SCALAR(type, name, flags, snapshot, comment)                                          \
-    _Static_assert(!((flags)&FIELD_STATE) || sizeof(type) <= sizeof(double), #name);
+    _Static_assert(!((flags)&FIELD_STATE) || sizeof(type) == sizeof(double), #name);
 #define FITS_VECTOR FITS_SCALAR
 PARTICLE_FIELDS(FITS_SCALAR, FITS_VECTOR)
 /* A ghost mirrors vectors and copies scalars. */
@@ -113,21 +113,25 @@ PARTICLE_FIELDS(FITS_SCALAR, FITS_VECTOR)
     _Static_assert(!((flags)&FIELD_GHOST_COPY), #name " is a vector: mirror it");
 PARTICLE_FIELDS(GHOST_RULE_SCALAR, GHOST_RULE_VECTOR)
 
-/* a[k] = a[order[k]] for elements of `size` bytes (at most a double's), through scratch */
-static void permute(void *a, size_t size, const uint32_t *order, size_t n, double *scratch)
+/* a[k] = a[order[k]] for elements of eight bytes, through scratch. Both loops split the
+ * particles as the passes do, so each thread writes the share it goes on to compute. */
+static void permute(void *a, const uint32_t *order, size_t n, double *scratch)
 {
+    enum { SIZE = sizeof(double) };
     char *bytes = a, *tmp = (char *)scratch;
-    for (size_t k = 0; k < n; k++) memcpy(tmp + k * size, bytes + order[k] * size, size);
-    memcpy(bytes, tmp, n * size);
+#pragma omp parallel for schedule(static)
+    for (size_t k = 0; k < n; k++) memcpy(tmp + k * SIZE, bytes + (size_t)order[k] * SIZE, SIZE);
+#pragma omp parallel for schedule(static)
+    for (size_t k = 0; k < n; k++) memcpy(bytes + k * SIZE, tmp + k * SIZE, SIZE);
 }
 
 void particles_permute_fluid(particles *p, const uint32_t *order, double *scratch)
 {
     size_t n = p->n_fluid;
 #define PERMUTE_SCALAR(type, name, flags, snapshot, comment)                                       \
-    if ((flags)&FIELD_STATE) permute(p->name, sizeof(type), order, n, scratch);
+    if ((flags)&FIELD_STATE) permute(p->name, order, n, scratch);
 #define PERMUTE_VECTOR(type, name, flags, snapshot, comment)                                       \
     if ((flags)&FIELD_STATE)                                                                       \
-        for (int d = 0; d < DIM; d++) permute(p->name[d], sizeof(type), order, n, scratch);
+        for (int d = 0; d < DIM; d++) permute(p->name[d], order, n, scratch);
     PARTICLE_FIELDS(PERMUTE_SCALAR, PERMUTE_VECTOR)
 }
