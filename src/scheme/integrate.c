@@ -5,8 +5,6 @@
 #include "scheme/passes.h"
 #include "scheme/solver.h"
 
-#include <string.h>
-
 /* Eq. (8); dt_a from the largest acceleration of the previous step */
 static double time_step(const solver *s)
 {
@@ -88,10 +86,12 @@ static void rk_arrays(solver *s, double **y, double **rate)
 
 /* One variable of particle i after a stage's rate k: the weighted sum gains w k, and the state
  * moves on to the next stage's, y0 + c k, or after the last stage to the step's end, y0 + c sum
- * (c = dt). */
-static inline void rk_variable(double *sum, double *y, const double *y0, size_t i, double k,
-                               double w, double c, bool first, bool last)
+ * (c = dt). The first stage keeps the step's starting state in y0 first: within the loop that
+ * reads it, by the thread that goes on to use it, rather than in a copy of its own. */
+static inline void rk_variable(double *sum, double *y, double *y0, size_t i, double k, double w,
+                               double c, bool first, bool last)
 {
+    if (first) y0[i] = y[i];
     sum[i] = (first ? 0.0 : sum[i]) + w * k;
     y[i] = y0[i] + c * (last ? sum[i] : k);
 }
@@ -204,13 +204,11 @@ void solver_advance(solver *s, double t_stop)
     static const double stage_c[4] = {0.0, 0.5, 0.5, 1.0};
     static const double stage_w[4] = {1.0 / 6.0, 1.0 / 3.0, 1.0 / 3.0, 1.0 / 6.0};
     particles *p = &s->p;
-    size_t n = p->n_fluid;
     double dt = s->dt;
     double *y[RK_VARS], *rate[RK_VARS];
     rk_arrays(s, y, rate);
     /* constant masses stay as they are: m + c * 0 = m (the mass is the last variable) */
     int n_vars = solver_masses_vary(s) ? RK_VARS : RK_MASS;
-    for (int v = 0; v < n_vars; v++) memcpy(s->y0[v], y[v], n * sizeof(double));
     double work = 0.0, work_st = 0.0, work_moves = 0.0;
     bool moves = s->pp.shifting || s->pp.volume_correction;
     for (int stage = 0; stage < 4; stage++) {
