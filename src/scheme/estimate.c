@@ -11,13 +11,12 @@
 
 /* Cost of one particle-step (one fluid particle through one RK4 step, its ghosts, neighbour
    lists, per-step fields and volume diagnostics included) on one thread of the 2-core
-   development machine, measured on whole runs of the shipped cases with their outputs
-   (delta-plus-ALE, surface tension, probes): docs/validation.md, "Cost", INM1 2D at N = 25:
-   1.6e5 particle-steps per CPU second, 6.2 us each; INM2 3D at N = 20: 3.9e4 per CPU second,
-   25.6 us each. `make bench` (docs/performance.md) times the bare delta-SPH step of a 2D tank
-   at 2.5e5 - 3.2e5 particle-steps/s on one thread (3.1 - 4.0 us): the cases' schemes and
-   outputs cost more than that, hence the run figures. */
-#define US_PER_PARTICLE_STEP (DIM == 2 ? 6.2 : 1e6 / 3.9e4)
+   development machine, measured on whole runs of the shipped cases as they are
+   (delta-plus-ALE, surface tension, probes, snapshots and images): a run's wall time over
+   the steps and particles this estimate counts (docs/checks.md). cases/inm1.ini at N = 25
+   over 5 s, 3.4 us; cases/inm2-3d.ini at N = 20 over 0.5 s, 7.5 us. Finer resolutions cost
+   less a particle-step (INM1 at N = 50: 2.2 us; INM2 3D at N = 40: 5.3 us): this errs long. */
+#define US_PER_PARTICLE_STEP (DIM == 2 ? 3.4 : 7.5)
 
 /* Lattice points of an axis of n points, spaced s, whose first point is dist0 + s/2 from a
    wall, that lie within `reach` of it: the layers that get a ghost on that side. */
