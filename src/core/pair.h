@@ -128,13 +128,4 @@ pair_row pair_row_of(const kernel *k, double *const x[DIM], const neighbour_list
                         !pair_of(k, x, xi, pr##_row, pr##_at, &(pr))) {                            \
                     } else
 
-/* A parallel loop over the fluid whose work lies in S_F, split as every pass is: each thread
- * takes the same contiguous share of the fluid, which keeps in its cache what it read and wrote
- * in the step's other passes. The fluid is sorted by cell strip by strip along x (cells.h), so
- * a share is a stretch of the tank's width with its part of S_F. Chunks dealt out as threads
- * come free (`schedule(dynamic, 256)`) made two threads 7 % slower on issue 22's case: each
- * chunk's data had been the other core's (docs/performance.md). Each particle must write only
- * its own entries, so that the result does not depend on the split. */
-#define PARALLEL_FOR_OVER_S_F _Pragma("omp parallel for schedule(static)")
-
 #endif

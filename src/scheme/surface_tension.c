@@ -72,7 +72,7 @@ static void interface_and_normals(const surface_tension_params *st, const kernel
                                   const neighbour_list *nl, surface_tension_work *w,
                                   double *const normal[DIM])
 {
-    PARALLEL_FOR_OVER_S_F
+#pragma omp parallel for schedule(static)
     for (size_t i = 0; i < p->n_fluid; i++) {
         double delta = 0.0, band = 0.0;
         vec n = vec_zero();
@@ -110,7 +110,7 @@ static void smoothed_normals(const kernel *k, const particles *p, const neighbou
                              const bodies_domain *d, double *const normal[DIM],
                              double *const smooth[DIM])
 {
-    PARALLEL_FOR_OVER_S_F
+#pragma omp parallel for schedule(static)
     for (size_t i = 0; i < p->n_fluid; i++) {
         vec xi = vec_load(p->x, i), sum = vec_scale(vec_load(normal, i), k->norm * p->vol[i]);
         if (p->surface[i] == SURFACE_FREE) {
@@ -133,7 +133,7 @@ static void surface_curvature(const surface_tension_params *st, const kernel *k,
                               const neighbour_list *nl, const bodies_domain *d,
                               double *const normal[DIM], double *kappa)
 {
-    PARALLEL_FOR_OVER_S_F
+#pragma omp parallel for schedule(static)
     for (size_t i = 0; i < p->n_fluid; i++) {
         kappa[i] = 0.0;
         if (p->surface[i] != SURFACE_FREE) continue;
@@ -165,7 +165,7 @@ static void band_force(const surface_tension_params *st, const kernel *k, partic
                        const neighbour_list *nl, double *const smooth[DIM],
                        const double *kappa_surface, const double *band_sum)
 {
-    PARALLEL_FOR_OVER_S_F
+#pragma omp parallel for schedule(static)
     for (size_t i = 0; i < p->n_fluid; i++) {
         double kappa = 0.0;
         vec force = vec_zero();

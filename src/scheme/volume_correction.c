@@ -27,7 +27,7 @@ static void interior_mismatch(double lattice_sum, particles *p)
  * interior entries and writes only the others, so the loop has no race. */
 static void surface_band_mismatch(const kernel *k, particles *p, const neighbour_list *nl)
 {
-    PARALLEL_FOR_OVER_S_F
+#pragma omp parallel for schedule(static)
     for (size_t i = 0; i < p->n_fluid; i++) {
         if (p->surface[i] == SURFACE_INTERIOR) continue;
         vec xi = vec_load(p->x, i);
