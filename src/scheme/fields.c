@@ -138,51 +138,160 @@ typedef struct {
     double max_relative2;
 } shift_sums;
 
-/* shift_sums a block of entries at a time (core/pair_block.h): shifting_pair and
- * volume_correction_pair (src/physics) written out in blocks. The maximum takes only the pairs
- * within 2h, as the pair loops do (a maximum does not depend on the order). */
-PAIR_BLOCK_INLINE shift_sums shift_sums_of(const physics_params *pp, const particles *p,
-                                           const neighbour_list *nl, size_t i, bool shift,
-                                           bool correct)
+/* shift_sums lane by lane (core/pair_block.h) */
+typedef struct {
+    pair_block shifting[DIM], correction[DIM], max_relative2;
+} shift_block_sums;
+
+/* shifting_pair and volume_correction_pair (src/physics) written out in blocks. The maximum
+ * takes only the pairs within 2h, as the pair loops do (a maximum does not depend on the
+ * order). */
+PAIR_BLOCK_INLINE void shift_block_sums_add(shift_block_sums *s, const physics_params *pp,
+                                            const particles *p, const pair_block_geometry *b,
+                                            pair_block vj, vec ui, double ei, bool shift,
+                                            bool correct)
 {
-    vec xi = vec_load(p->x, i), ui = vec_load(p->u, i);
-    double ei = p->volume_mismatch[i];
-    PAIR_ROW(&pp->k, p->x, nl, i, xi, row);
-    pair_block shifting[DIM] = {{0}}, correction[DIM] = {{0}}, max_relative2 = {0};
-    pair_block_geometry b;
-    FOR_EACH_PAIR_BLOCK_OF_ROW (&row, b) {
-        pair_block vj = pair_block_gather(p->vol, b.j);
-        if (shift) { /* shifting_pair */
-            pair_block q = b.w / pp->w_dr, q2 = q * q;
-            pair_block scale = (1.0 + SHIFTING_R * q2 * q2) * b.f * vj;
-            pair_block rel2 = pair_block_broadcast(0.0);
-            for (int d = 0; d < DIM; d++) {
-                shifting[d] += b.r_ji[d] * scale;
-                pair_block u_ji = pair_block_gather(p->u[d], b.j) - ui.c[d];
-                rel2 += u_ji * u_ji;
-            }
-            rel2 = (pair_block)(b.inside & (pair_block_mask)rel2); /* |u_ji|^2 >= 0: 0 drops */
-            max_relative2 = pair_block_select(rel2 > max_relative2, rel2, max_relative2);
+    if (shift) { /* shifting_pair */
+        pair_block q = b->w / pp->w_dr, q2 = q * q;
+        pair_block scale = (1.0 + SHIFTING_R * q2 * q2) * b->f * vj;
+        pair_block rel2 = pair_block_broadcast(0.0);
+        for (int d = 0; d < DIM; d++) {
+            s->shifting[d] += b->r_ji[d] * scale;
+            pair_block u_ji = pair_block_gather(p->u[d], b->j) - ui.c[d];
+            rel2 += u_ji * u_ji;
         }
-        if (correct) { /* volume_correction_pair */
-            pair_block scale = (pair_block_gather(p->volume_mismatch, b.j) - ei) * b.f * vj;
-            for (int d = 0; d < DIM; d++) correction[d] += b.r_ji[d] * scale;
-        }
+        rel2 = (pair_block)(b->inside & (pair_block_mask)rel2); /* |u_ji|^2 >= 0: 0 drops */
+        s->max_relative2 = pair_block_select(rel2 > s->max_relative2, rel2, s->max_relative2);
     }
+    if (correct) { /* volume_correction_pair */
+        pair_block scale = (pair_block_gather(p->volume_mismatch, b->j) - ei) * b->f * vj;
+        for (int d = 0; d < DIM; d++) s->correction[d] += b->r_ji[d] * scale;
+    }
+}
+
+PAIR_BLOCK_INLINE shift_sums shift_sums_total(const shift_block_sums *bs)
+{
     shift_sums s = {.max_relative2 = 0.0};
     for (int d = 0; d < DIM; d++) {
-        s.shifting.c[d] = block_total(shifting[d]);
-        s.correction.c[d] = block_total(correction[d]);
+        s.shifting.c[d] = block_total(bs->shifting[d]);
+        s.correction.c[d] = block_total(bs->correction[d]);
     }
     for (int l = 0; l < PAIR_BLOCK; l++)
-        if (max_relative2[l] > s.max_relative2) s.max_relative2 = max_relative2[l];
+        if (bs->max_relative2[l] > s.max_relative2) s.max_relative2 = bs->max_relative2[l];
     return s;
 }
 
-PAIR_BLOCK_FORMS(shift_sums, shift_sums_of,
+/* The sums of D^rho and D^m of particle i (Eq. 5) and the rate of diffusion_stability_factor. */
+typedef struct {
+    double rho, m, rate;
+} diffusion_sums;
+
+/* diffusion_sums lane by lane, and what of particle i they read at every pair */
+typedef struct {
+    pair_block rho, m, rate;
+} diffusion_block_sums;
+
+typedef struct {
+    vec grad_rho;
+    double rho, nu_delta, m, vol;
+    bool ghosts; /* its row reaches a wall image */
+} diffusion_particle;
+
+PAIR_BLOCK_INLINE diffusion_particle diffusion_particle_of(const particles *p,
+                                                           const neighbour_list *nl, size_t i)
+{
+    diffusion_particle d = {.grad_rho = vec_load(p->grad_rho, i),
+                            .rho = p->rho[i],
+                            .nu_delta = p->nu_delta[i],
+                            .m = p->m[i],
+                            .vol = p->vol[i],
+                            .ghosts = neighbour_row_has_ghosts(nl, i)};
+    return d;
+}
+
+/* The masses of the block's neighbours; a wall image, which has no mass of its own (the field
+ * is the fluid's and the halo's), reads as m_i, so that its mass diffusion term is an exact 0:
+ * no mass crosses a wall. */
+PAIR_BLOCK_INLINE pair_block fluid_masses(const particles *p, const pair_block_geometry *b,
+                                          double mi, bool ghosts)
+{
+    if (!ghosts) return pair_block_gather(p->m, b->j);
+    pair_block mj;
+    for (int l = 0; l < PAIR_BLOCK; l++)
+        mj[l] = particle_is_wall_image(p, (size_t)b->j[l]) ? mi : p->m[b->j[l]];
+    return mj;
+}
+
+/* harmonic_mean_capped, diffusion_rate_pair, diffusion_rho_pair and mass_diffusion_pair
+ * (physics/), written out in blocks operation by operation. The mass diffusion runs between
+ * fluid particles only: no mass crosses a wall, and the total mass stays exact. */
+PAIR_BLOCK_INLINE void diffusion_block_sums_add(diffusion_block_sums *s, const physics_params *pp,
+                                                const particles *p, const pair_block_geometry *b,
+                                                pair_block vj, const diffusion_particle *i,
+                                                const bool mass)
+{
+    pair_block nuj = pair_block_gather(p->nu_delta, b->j);
+    /* harmonic_mean_capped */
+    pair_block nu_sum = i->nu_delta + nuj;
+    pair_block delta = pair_block_select(nu_sum > 0.0, 2.0 * i->nu_delta * nuj / nu_sum,
+                                         pair_block_broadcast(0.0));
+    delta = pair_block_select(delta < pp->delta_cap, delta, pair_block_broadcast(pp->delta_cap));
+    /* diffusion_rate_pair, diffusion_rho_pair */
+    pair_block rate_ij = 2.0 * delta * b->f * vj;
+    pair_block linear = pair_block_broadcast(0.0);
+    for (int d = 0; d < DIM; d++)
+        linear += (i->grad_rho.c[d] + pair_block_gather(p->grad_rho[d], b->j)) * b->r_ji[d];
+    linear = 0.5 * linear;
+    s->rho += rate_ij * ((pair_block_gather(p->rho, b->j) - i->rho) - linear);
+    s->rate += rate_ij;
+    if (mass) { /* mass_diffusion_pair, 0 for a wall image */
+        pair_block mj = fluid_masses(p, b, i->m, i->ghosts);
+        pair_block term = 2.0 * pp->delta_c0_h * (mj - i->m) * b->f;
+        pair_block root = i->vol * vj;
+        for (int l = 0; l < PAIR_BLOCK; l++) root[l] = __builtin_sqrt(root[l]);
+        s->m += term * root;
+    }
+}
+
+PAIR_BLOCK_INLINE diffusion_sums diffusion_sums_total(const diffusion_block_sums *bs)
+{
+    diffusion_sums s = {block_total(bs->rho), block_total(bs->m), block_total(bs->rate)};
+    return s;
+}
+
+/* What the shifting pass sums over a row: the shifting and correction sums and, with
+ * `diffuse`, the diffusion's, all over one geometry of the row. */
+typedef struct {
+    shift_sums shift;
+    diffusion_sums diffusion;
+} shift_row_sums;
+
+PAIR_BLOCK_INLINE shift_row_sums shift_row_sums_of(const physics_params *pp, const particles *p,
+                                                   const neighbour_list *nl, size_t i, bool shift,
+                                                   bool correct, bool diffuse, bool mass)
+{
+    vec xi = vec_load(p->x, i), ui = vec_load(p->u, i);
+    double ei = p->volume_mismatch[i];
+    diffusion_particle di = diffusion_particle_of(p, nl, i);
+    PAIR_ROW(&pp->k, p->x, nl, i, xi, row);
+    shift_block_sums sb;
+    diffusion_block_sums db;
+    __builtin_memset(&sb, 0, sizeof sb);
+    __builtin_memset(&db, 0, sizeof db);
+    pair_block_geometry b;
+    FOR_EACH_PAIR_BLOCK_OF_ROW (&row, b) {
+        pair_block vj = pair_block_gather(p->vol, b.j);
+        shift_block_sums_add(&sb, pp, p, &b, vj, ui, ei, shift, correct);
+        if (diffuse) diffusion_block_sums_add(&db, pp, p, &b, vj, &di, mass);
+    }
+    shift_row_sums s = {shift_sums_total(&sb), diffusion_sums_total(&db)};
+    return s;
+}
+
+PAIR_BLOCK_FORMS(shift_row_sums, shift_row_sums_of,
                  (const physics_params *pp, const particles *p, const neighbour_list *nl, size_t i,
-                  bool shift, bool correct),
-                 (pp, p, nl, i, shift, correct))
+                  bool shift, bool correct, bool diffuse, bool mass),
+                 (pp, p, nl, i, shift, correct, diffuse, mass))
 
 /* Eq. (7): du*_i = -xi h U_max sum_j [1 + R (W_ij/W(dr))^4] grad_i W_ij V_j, the sum taken
  * beyond the floor of the liquid's own compression gradient (shifting.h), limited, then
@@ -199,83 +308,58 @@ static vec shifting_velocity(const physics_params *pp, const particles *p, size_
     return du;
 }
 
-void fields_shifting_and_correction(const physics_params *pp, particles *p,
-                                    const neighbour_list *nl, bool shift, bool correct)
+/* D^rho and D^m of Eq. (5) from particle i's sums, frozen over the step dt */
+static void store_diffusion(particles *p, size_t i, const diffusion_sums *s, double dt)
 {
-    __auto_type sums_of = shift_sums_of_form();
+    p->diff_rho[i] = s->rho * diffusion_stability_factor(s->rate, dt);
+    p->diff_m[i] = s->m;
+}
+
+/* The diffusion of a row that reaches no wall image reads only fields that are final once
+ * EdBC has corrected the densities and volumes (the geometry's gradients and coefficients,
+ * rho, V, m: bounce-back, between this pass and the frozen terms, changes velocities only),
+ * so it is summed here, over the shifting's row geometry. A row that reaches one waits for
+ * the wall images' copies of the per-step fields (fields_frozen_terms). */
+void fields_shifting_and_correction(const physics_params *pp, particles *p,
+                                    const neighbour_list *nl, bool shift, bool correct,
+                                    const step_diffusion *diffusion)
+{
+    __auto_type sums_of = shift_row_sums_of_form();
+    bool mass = diffusion && diffusion->mass;
 #pragma omp parallel for schedule(static)
     for (size_t i = 0; i < p->n_fluid; i++) {
-        if (p->lambda[i] < SHIFTING_LAMBDA_MIN) { /* neither moves it: no row geometry */
+        bool diffuse = diffusion && !neighbour_row_has_ghosts(nl, i);
+        if (p->lambda[i] < SHIFTING_LAMBDA_MIN) { /* neither moves it */
             if (shift) vec_store(p->shift, i, vec_zero());
             if (correct) vec_store(p->correction, i, vec_zero());
+            if (!diffuse) continue; /* no row geometry */
+            shift_row_sums s = sums_of(pp, p, nl, i, false, false, true, mass);
+            store_diffusion(p, i, &s.diffusion, diffusion->dt);
             continue;
         }
-        shift_sums s = sums_of(pp, p, nl, i, shift, correct);
-        if (shift) vec_store(p->shift, i, shifting_velocity(pp, p, i, &s));
+        shift_row_sums s = sums_of(pp, p, nl, i, shift, correct, diffuse, mass);
+        if (shift) vec_store(p->shift, i, shifting_velocity(pp, p, i, &s.shift));
         if (correct)
-            vec_store(p->correction, i, volume_correction_velocity_from(pp, p, i, s.correction));
+            vec_store(p->correction, i,
+                      volume_correction_velocity_from(pp, p, i, s.shift.correction));
+        if (diffuse) store_diffusion(p, i, &s.diffusion, diffusion->dt);
     }
 }
 
-/* The sums of D^rho and D^m of particle i (Eq. 5) and the rate of diffusion_stability_factor. */
-typedef struct {
-    double rho, m, rate;
-} diffusion_sums;
-
-/* The masses of the block's neighbours; a wall image, which has no mass of its own (the field
- * is the fluid's and the halo's), reads as m_i, so that its mass diffusion term is an exact 0:
- * no mass crosses a wall. */
-PAIR_BLOCK_INLINE pair_block fluid_masses(const particles *p, const pair_block_geometry *b,
-                                          double mi, bool ghosts)
-{
-    if (!ghosts) return pair_block_gather(p->m, b->j);
-    pair_block mj;
-    for (int l = 0; l < PAIR_BLOCK; l++)
-        mj[l] = particle_is_wall_image(p, (size_t)b->j[l]) ? mi : p->m[b->j[l]];
-    return mj;
-}
-
-/* Particle i's diffusion sums over its row, a block of entries at a time (core/pair_block.h):
- * harmonic_mean_capped, diffusion_rate_pair, diffusion_rho_pair and mass_diffusion_pair
- * (physics/), written out in blocks operation by operation. The mass diffusion runs between
- * fluid particles only: no mass crosses a wall, and the total mass stays exact. */
+/* Particle i's diffusion sums over its row, a block of entries at a time (core/pair_block.h). */
 PAIR_BLOCK_INLINE diffusion_sums diffusion_sums_of(const physics_params *pp, const particles *p,
                                                    const neighbour_list *nl, size_t i,
                                                    const bool mass)
 {
-    const kernel *k = &pp->k;
-    vec xi = vec_load(p->x, i), gi = vec_load(p->grad_rho, i);
-    double rhoi = p->rho[i], nui = p->nu_delta[i], mi = p->m[i], vi = p->vol[i];
-    bool ghosts = neighbour_row_has_ghosts(nl, i);
-    PAIR_ROW(k, p->x, nl, i, xi, row);
-    pair_block sum_rho = {0}, sum_m = {0}, rate = {0};
+    vec xi = vec_load(p->x, i);
+    diffusion_particle di = diffusion_particle_of(p, nl, i);
+    PAIR_ROW(&pp->k, p->x, nl, i, xi, row);
+    diffusion_block_sums db;
+    __builtin_memset(&db, 0, sizeof db);
     pair_block_geometry b;
-    FOR_EACH_PAIR_BLOCK_OF_ROW (&row, b) {
-        pair_block vj = pair_block_gather(p->vol, b.j), nuj = pair_block_gather(p->nu_delta, b.j);
-        /* harmonic_mean_capped */
-        pair_block nu_sum = nui + nuj;
-        pair_block delta =
-            pair_block_select(nu_sum > 0.0, 2.0 * nui * nuj / nu_sum, pair_block_broadcast(0.0));
-        delta =
-            pair_block_select(delta < pp->delta_cap, delta, pair_block_broadcast(pp->delta_cap));
-        /* diffusion_rate_pair, diffusion_rho_pair */
-        pair_block rate_ij = 2.0 * delta * b.f * vj;
-        pair_block linear = pair_block_broadcast(0.0);
-        for (int d = 0; d < DIM; d++)
-            linear += (gi.c[d] + pair_block_gather(p->grad_rho[d], b.j)) * b.r_ji[d];
-        linear = 0.5 * linear;
-        sum_rho += rate_ij * ((pair_block_gather(p->rho, b.j) - rhoi) - linear);
-        rate += rate_ij;
-        if (mass) { /* mass_diffusion_pair, 0 for a wall image */
-            pair_block mj = fluid_masses(p, &b, mi, ghosts);
-            pair_block term = 2.0 * pp->delta_c0_h * (mj - mi) * b.f;
-            pair_block root = vi * vj;
-            for (int l = 0; l < PAIR_BLOCK; l++) root[l] = __builtin_sqrt(root[l]);
-            sum_m += term * root;
-        }
-    }
-    diffusion_sums s = {block_total(sum_rho), block_total(sum_m), block_total(rate)};
-    return s;
+    FOR_EACH_PAIR_BLOCK_OF_ROW (&row, b)
+        diffusion_block_sums_add(&db, pp, p, &b, pair_block_gather(p->vol, b.j), &di, mass);
+    return diffusion_sums_total(&db);
 }
 
 PAIR_BLOCK_FORMS(diffusion_sums, diffusion_sums_of,
@@ -283,29 +367,26 @@ PAIR_BLOCK_FORMS(diffusion_sums, diffusion_sums_of,
                   bool mass),
                  (pp, p, nl, i, mass))
 
-/* D^rho and D^m of Eq. (5), frozen over the step. */
-static void diffusion(const physics_params *pp, particles *p, const neighbour_list *nl,
-                      const bool mass, double dt)
+/* D^rho and D^m of Eq. (5), frozen over the step, of the rows `rows` names. */
+static void diffuse_rows(const physics_params *pp, particles *p, const neighbour_list *nl,
+                         const step_diffusion *diffusion, diffusion_rows rows)
 {
     __auto_type sums_of = diffusion_sums_of_form();
 #pragma omp parallel for schedule(static)
     for (size_t i = 0; i < p->n_fluid; i++) {
-        diffusion_sums s = sums_of(pp, p, nl, i, mass);
-        p->diff_rho[i] = s.rho * diffusion_stability_factor(s.rate, dt);
-        p->diff_m[i] = s.m;
+        if (rows == DIFFUSION_ROWS_AT_WALLS && !neighbour_row_has_ghosts(nl, i)) continue;
+        diffusion_sums s = sums_of(pp, p, nl, i, diffusion->mass);
+        store_diffusion(p, i, &s, diffusion->dt);
     }
 }
 
 void fields_frozen_terms(const physics_params *pp, particles *p, const neighbour_list *nl,
-                         const tank_frame *frame, bool variable_mass, double dt)
+                         const tank_frame *frame, const step_diffusion *diffusion,
+                         diffusion_rows rows)
 {
     tank_mirror_step_fields(p, frame, pp->c0);
-    if (pp->c_delta > 0.0) {
-        if (variable_mass)
-            diffusion(pp, p, nl, true, dt);
-        else
-            diffusion(pp, p, nl, false, dt);
-    } else {
+    if (diffusion)
+        diffuse_rows(pp, p, nl, diffusion, rows);
+    else
         for (size_t i = 0; i < p->n_fluid; i++) p->diff_rho[i] = p->diff_m[i] = 0.0;
-    }
 }

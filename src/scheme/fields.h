@@ -29,19 +29,34 @@ static inline double fields_compression_gradient(const particles *p, size_t i)
 void fields_geometry(const physics_params *pp, const tank *t, particles *p,
                      const neighbour_list *nl);
 
+/* The density diffusion D^rho and, with `mass` (variable masses), D^m of Eq. (5), frozen over
+ * the step dt, which bounds each particle's D^rho so that the step is stable (diffusion.h).
+ * A pass takes NULL where there is none (C_delta = 0). */
+typedef struct {
+    bool mass;
+    double dt;
+} step_diffusion;
+
 /* The shifting velocity du of Eq. (7) (`shift`) and the volume correction's dv (`correct`,
  * volume_correction.h, after its mismatch e), frozen over the RK stages (sec. 2.4), for the
  * fluid; computed after EdBC has corrected the densities, since the volumes weigh them. Both
- * sum over the same neighbours, so one pass computes each row's geometry once for the two. */
+ * sum over the same neighbours, so one pass computes each row's geometry once for the two,
+ * and for the `diffusion` of the rows that reach no wall image (fields_frozen_terms does the
+ * others). */
 void fields_shifting_and_correction(const physics_params *pp, particles *p,
-                                    const neighbour_list *nl, bool shift, bool correct);
+                                    const neighbour_list *nl, bool shift, bool correct,
+                                    const step_diffusion *diffusion);
+
+/* The rows whose diffusion fields_frozen_terms computes: all, or, after
+ * fields_shifting_and_correction has done the others, those that reach a wall image. */
+typedef enum { DIFFUSION_ROWS_ALL, DIFFUSION_ROWS_AT_WALLS } diffusion_rows;
 
 /* The other terms frozen over the RK stages, after the shifting velocity and bounce-back:
- * the ghosts' copies of the per-step fields, D^rho and, with variable masses, D^m of
- * Eq. (5). dt, the step they are frozen over, bounds each particle's D^rho so that the step
- * is stable (diffusion.h). `frame`: the tank frame at the step's start, whose body force
- * the ghosts' hydrostatic density gradient follows. */
+ * the ghosts' copies of the per-step fields, then the `diffusion` of the `rows` (0 where
+ * `diffusion` is NULL). `frame`: the tank frame at the step's start, whose body force the
+ * ghosts' hydrostatic density gradient follows. */
 void fields_frozen_terms(const physics_params *pp, particles *p, const neighbour_list *nl,
-                         const tank_frame *frame, bool variable_mass, double dt);
+                         const tank_frame *frame, const step_diffusion *diffusion,
+                         diffusion_rows rows);
 
 #endif

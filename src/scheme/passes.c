@@ -87,12 +87,22 @@ static bool corrects(const solver *s) { return s->pp.volume_correction; }
 
 static bool shifts_or_corrects(const solver *s) { return s->pp.shifting || corrects(s); }
 
+/* The step's density (and mass) diffusion, or NULL (fields.h) */
+static const step_diffusion *diffusion_of(const solver *s, step_diffusion *d)
+{
+    if (s->pp.c_delta <= 0.0) return NULL;
+    *d = (step_diffusion){.mass = s->eta_control.eta > 0.0, .dt = s->dt};
+    return d;
+}
+
 static long shifting_and_correction(solver *s, const tank_frame *frame, const neighbour_list *rows)
 {
     (void)frame;
     /* the walls' images read e here, after the driver has brought the halo's e up to date */
     if (corrects(s)) volume_correction_ghost_mismatch(&s->p);
-    fields_shifting_and_correction(&s->pp, &s->p, rows, s->pp.shifting, corrects(s));
+    step_diffusion d;
+    fields_shifting_and_correction(&s->pp, &s->p, rows, s->pp.shifting, corrects(s),
+                                   diffusion_of(s, &d));
     return 0;
 }
 
@@ -125,7 +135,9 @@ static long bounce_back(solver *s, const tank_frame *frame, const neighbour_list
 
 static long frozen_terms(solver *s, const tank_frame *frame, const neighbour_list *rows)
 {
-    fields_frozen_terms(&s->pp, &s->p, rows, frame, s->eta_control.eta > 0.0, s->dt);
+    step_diffusion d;
+    fields_frozen_terms(&s->pp, &s->p, rows, frame, diffusion_of(s, &d),
+                        shifts_or_corrects(s) ? DIFFUSION_ROWS_AT_WALLS : DIFFUSION_ROWS_ALL);
     return 0;
 }
 
@@ -158,11 +170,13 @@ static const step_pass prepare_passes[] = {
      correction_mismatch},
     {"volume mismatch in S_F", F(x) | F(vol) | F(surface) | F(volume_mismatch), F(volume_mismatch),
      corrects, correction_band},
-    /* Eq. (7) and the correction velocity, over one geometry of each row */
-    {"shifting (Eq. 7) and correction velocity",
-     F(x) | F(u) | F(rho) | F(vol) | F(grad_rho) | F(lambda) | F(normal) | F(surface) |
-         F(volume_mismatch),
-     F(shift) | F(correction), shifts_or_corrects, shifting_and_correction},
+    /* Eq. (7), the correction velocity and the diffusion of the rows away from the walls
+       (Eq. 5), over one geometry of each row */
+    {"shifting (Eq. 7), correction velocity, diffusion off the walls",
+     F(x) | F(u) | F(rho) | F(m) | F(vol) | F(grad_rho) | F(nu_delta) | F(lambda) | F(normal) |
+         F(surface) | F(volume_mismatch),
+     F(shift) | F(correction) | F(diff_rho) | F(diff_m), shifts_or_corrects,
+     shifting_and_correction},
     {"one normal speed per body", F(vol) | F(lambda) | F(normal) | F(correction), F(correction),
      corrects, correction_per_body},
     {"bounce-back", F(x) | F(u) | F(shift) | F(correction), F(u) | F(shift) | F(correction), NULL,
