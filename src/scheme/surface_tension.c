@@ -115,10 +115,8 @@ static void smoothed_normals(const kernel *k, const particles *p, const neighbou
         vec xi = vec_load(p->x, i), sum = vec_scale(vec_load(normal, i), k->norm * p->vol[i]);
         if (p->surface[i] == SURFACE_FREE) {
             pair pr;
-            FOR_EACH_PAIR (k, p->x, nl, i, xi, pr) {
-                if (p->surface[pr.j] != SURFACE_FREE) continue;
+            FOR_EACH_PAIR_WHERE (k, p->x, nl, i, xi, pr, p->surface[pr.j] == SURFACE_FREE)
                 sum = vec_axpy(sum, pr.w * p->vol[pr.j], particle_source_vector(p, normal, pr.j));
-            }
         }
         double norm = vec_norm(sum);
         vec_store(smooth, i, norm > 0.0 ? vec_scale(sum, 1.0 / norm) : sum);
@@ -140,11 +138,9 @@ static void surface_curvature(const surface_tension_params *st, const kernel *k,
         vec xi = vec_load(p->x, i), ni = vec_load(normal, i);
         curvature_sums sums = {0.0, 0.0};
         pair pr;
-        FOR_EACH_PAIR (k, p->x, nl, i, xi, pr) {
-            if (p->surface[pr.j] != SURFACE_FREE) continue;
+        FOR_EACH_PAIR_WHERE (k, p->x, nl, i, xi, pr, p->surface[pr.j] == SURFACE_FREE)
             curvature_pair(&sums, ni, particle_source_vector(p, normal, pr.j), pr.r_ji, pr.f,
                            p->vol[pr.j]);
-        }
         kappa[i] = curvature_value(&sums, DIM, st->dr);
     }
     bodies_share(d, p, kappa);
