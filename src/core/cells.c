@@ -42,6 +42,9 @@ int cells_setup(cell_grid *g, const double lo[DIM], const double hi[DIM], double
         size_t *s = realloc(g->start, (n_cells + 1) * sizeof *s);
         if (!s) return -1;
         g->start = s;
+        uint8_t *mark = realloc(g->mark, n_cells + 1);
+        if (!mark) return -1;
+        g->mark = mark;
         g->cells_capacity = n_cells + 1;
     }
     return 0;
@@ -52,6 +55,7 @@ void cells_free(cell_grid *g)
     free(g->start);
     free(g->item);
     free(g->cell_of);
+    free(g->mark);
     free(g->own_xs);
     memset(g, 0, sizeof *g);
 }
@@ -67,6 +71,17 @@ static inline int cell_coord(const cell_grid *g, int d, double x)
 int cells_column(const cell_grid *g, double x) { return cell_coord(g, 0, x); }
 
 size_t cells_n_strips(const cell_grid *g) { return (size_t)((g->n[0] + g->strip - 1) / g->strip); }
+
+void cells_mark(cell_grid *g, const uint8_t *flag, size_t n)
+{
+#pragma omp parallel for schedule(static)
+    for (size_t c = 0; c < g->n_cells; c++) {
+        uint8_t marked = 0;
+        for (size_t m = g->start[c]; m < g->start[c + 1] && !marked; m++)
+            marked = g->item[m] < n && flag[g->item[m]];
+        g->mark[c] = marked;
+    }
+}
 
 static inline size_t cell_index(const cell_grid *g, const int c[DIM])
 {
@@ -126,6 +141,24 @@ void neighbours_free(neighbour_list *nl)
     free(nl->base);
     free(nl->index);
     memset(nl, 0, sizeof *nl);
+}
+
+bool cells_marked_around(const cell_grid *g, const double x[DIM])
+{
+    int lo[DIM], hi[DIM];
+    for (int d = 0; d < DIM; d++) {
+        int c0 = cell_coord(g, d, x[d]);
+        lo[d] = c0 > 0 ? c0 - 1 : 0;
+        hi[d] = c0 < g->n[d] - 1 ? c0 + 1 : g->n[d] - 1;
+    }
+    int c[DIM];
+#if DIM == 3
+    for (c[2] = lo[2]; c[2] <= hi[2]; c[2]++)
+#endif
+        for (c[1] = lo[1]; c[1] <= hi[1]; c[1]++)
+            for (c[0] = lo[0]; c[0] <= hi[0]; c[0]++)
+                if (g->mark[cell_index(g, c)]) return true;
+    return false;
 }
 
 /* Scans the 3^DIM cells around particle i in a fixed order into the row. */

@@ -93,8 +93,11 @@ void freesurface_test(const kernel *k, double dr, double normal_reference, parti
     }
 }
 
-void freesurface_region(const kernel *k, particles *p, const neighbour_list *nl)
+void freesurface_region(const kernel *k, particles *p, const neighbour_list *nl, cell_grid *g)
 {
+    /* the cells that hold a free-surface particle: a particle with none around it has no
+       free-surface neighbour, and its row need not be read */
+    cells_mark(g, p->is_free, particles_images_begin(p));
     /* S_F: the free surface and every fluid particle within 2h of it (ghosts add nothing: a
        mirror image is never closer than its source). Below the free surface, a particle of S_F
        takes the normal of the surface nearest to it, that of its nearest free-surface
@@ -110,6 +113,10 @@ void freesurface_region(const kernel *k, particles *p, const neighbour_list *nl)
             continue;
         }
         vec xi = vec_load(p->x, i);
+        if (!cells_marked_around(g, xi.c)) {
+            p->surface[i] = SURFACE_INTERIOR;
+            continue;
+        }
         double nearest2 = INFINITY;
         pair pr;
         FOR_EACH_PAIR_WHERE (k, p->x, nl, i, xi, pr, free_surface_neighbour(p, pr.j))

@@ -54,9 +54,11 @@ double freesurface_reference_normal(const kernel *k, double dr);
  * neighbours (an MPI run refreshes its halo between them). freesurface_test fills p->is_free
  * of the fluid from lambda, normal and normal_raw of this step (Marrone et al. 2010);
  * freesurface_region then fills p->surface (S_F: the free surface and the fluid within 2h of
- * it) and gives S_F's other particles the normal of their nearest free-surface neighbour. */
+ * it) and gives S_F's other particles the normal of their nearest free-surface neighbour;
+ * `g`, the cells the rows were built from, tells it which rows can hold no free-surface
+ * particle (it marks the cells that hold one, cells_mark). */
 void freesurface_test(const kernel *k, double dr, double normal_reference, particles *p,
                       const neighbour_list *nl);
-void freesurface_region(const kernel *k, particles *p, const neighbour_list *nl);
+void freesurface_region(const kernel *k, particles *p, const neighbour_list *nl, cell_grid *g);
 
 #endif

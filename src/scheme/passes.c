@@ -44,7 +44,7 @@ static long free_surface_test(solver *s, const tank_frame *frame, const neighbou
 static long free_surface_region(solver *s, const tank_frame *frame, const neighbour_list *rows)
 {
     (void)frame;
-    freesurface_region(&s->pp.k, &s->p, rows);
+    freesurface_region(&s->pp.k, &s->p, rows, &s->grid);
     return 0;
 }
 
