@@ -97,6 +97,30 @@ static void check_near_parts(cell_grid *grid, const particles *p, double radius,
     assert_true(near_pairs > 0 && skin_pairs > 0); /* both parts tried */
 }
 
+/* cells_marked_around, after cells_mark of a sparse set of particles (every 97th of the
+ * first n_fluid + 5, ghosts among them): true wherever a marked particle lies within the radius
+ * of a fluid particle (brute force), and false for some. */
+static void check_marked_cells(cell_grid *grid, const particles *p, double radius)
+{
+    size_t limit = p->n_fluid + 5;
+    uint8_t *flag = calloc(p->n_total, 1);
+    for (size_t j = 0; j < p->n_total; j += 97) flag[j] = 1;
+    cells_mark(grid, flag, limit);
+    size_t unmarked = 0;
+    for (size_t i = 0; i < p->n_fluid; i++) {
+        vec xi = vec_load(p->x, i);
+        bool near_flagged = false;
+        for (size_t j = 0; j < limit; j++)
+            if (j != i && flag[j] && vec_norm2(vec_sub(vec_load(p->x, j), xi)) < radius * radius)
+                near_flagged = true;
+        bool around = cells_marked_around(grid, xi.c);
+        if (near_flagged) assert_true(around);
+        unmarked += !around;
+    }
+    assert_true(unmarked > 0);
+    free(flag);
+}
+
 static void check_against_brute_force(size_t n, double radius)
 {
     particles p;
@@ -164,6 +188,7 @@ static void check_against_brute_force(size_t n, double radius)
         pairs += (size_t)m;
     }
     assert_true(pairs > 0);
+    check_marked_cells(&grid, &p, radius);
 
     /* The next build sizes its rows by this one's longest: a sixteenth more (cells.h), not
      * the 4 of the overflow test nor a fixed guess; same rows. */
