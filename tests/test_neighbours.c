@@ -113,7 +113,7 @@ static void check_marked_cells(cell_grid *grid, const particles *p, double radiu
         for (size_t j = 0; j < limit; j++)
             if (j != i && flag[j] && vec_norm2(vec_sub(vec_load(p->x, j), xi)) < radius * radius)
                 near_flagged = true;
-        bool around = cells_marked_around(grid, xi.c);
+        bool around = cells_marked_around(grid, i);
         if (near_flagged) assert_true(around);
         unmarked += !around;
     }

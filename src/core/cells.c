@@ -72,17 +72,6 @@ int cells_column(const cell_grid *g, double x) { return cell_coord(g, 0, x); }
 
 size_t cells_n_strips(const cell_grid *g) { return (size_t)((g->n[0] + g->strip - 1) / g->strip); }
 
-void cells_mark(cell_grid *g, const uint8_t *flag, size_t n)
-{
-#pragma omp parallel for schedule(static)
-    for (size_t c = 0; c < g->n_cells; c++) {
-        uint8_t marked = 0;
-        for (size_t m = g->start[c]; m < g->start[c + 1] && !marked; m++)
-            marked = g->item[m] < n && flag[g->item[m]];
-        g->mark[c] = marked;
-    }
-}
-
 static inline size_t cell_index(const cell_grid *g, const int c[DIM])
 {
     int strip = c[0] / g->strip, x0 = strip * g->strip;
@@ -143,13 +132,13 @@ void neighbours_free(neighbour_list *nl)
     memset(nl, 0, sizeof *nl);
 }
 
-bool cells_marked_around(const cell_grid *g, const double x[DIM])
+/* Whether a cell of the 3^DIM around cell c (by its coordinates) holds a mark */
+static bool marked_around(const cell_grid *g, const int c0[DIM])
 {
     int lo[DIM], hi[DIM];
     for (int d = 0; d < DIM; d++) {
-        int c0 = cell_coord(g, d, x[d]);
-        lo[d] = c0 > 0 ? c0 - 1 : 0;
-        hi[d] = c0 < g->n[d] - 1 ? c0 + 1 : g->n[d] - 1;
+        lo[d] = c0[d] > 0 ? c0[d] - 1 : 0;
+        hi[d] = c0[d] < g->n[d] - 1 ? c0[d] + 1 : g->n[d] - 1;
     }
     int c[DIM];
 #if DIM == 3
@@ -157,8 +146,32 @@ bool cells_marked_around(const cell_grid *g, const double x[DIM])
 #endif
         for (c[1] = lo[1]; c[1] <= hi[1]; c[1]++)
             for (c[0] = lo[0]; c[0] <= hi[0]; c[0]++)
-                if (g->mark[cell_index(g, c)]) return true;
+                if (g->mark[cell_index(g, c)] & 1) return true;
     return false;
+}
+
+void cells_mark(cell_grid *g, const uint8_t *flag, size_t n)
+{
+#pragma omp parallel for schedule(static)
+    for (size_t c = 0; c < g->n_cells; c++) {
+        uint8_t marked = 0;
+        for (size_t m = g->start[c]; m < g->start[c + 1] && !marked; m++)
+            marked = g->item[m] < n && flag[g->item[m]];
+        g->mark[c] = marked;
+    }
+    /* bit 1: a mark in the cell or one beside it, cell by cell through their coordinates */
+    size_t rows = g->n_cells / (size_t)g->n[0];
+#pragma omp parallel for schedule(static)
+    for (size_t r = 0; r < rows; r++) {
+        int c[DIM];
+        size_t rest = r;
+        for (int d = 1; d < DIM; d++) {
+            c[d] = (int)(rest % (size_t)g->n[d]);
+            rest /= (size_t)g->n[d];
+        }
+        for (c[0] = 0; c[0] < g->n[0]; c[0]++)
+            if (marked_around(g, c)) g->mark[cell_index(g, c)] |= 2;
+    }
 }
 
 /* Scans the 3^DIM cells around particle i in a fixed order into the row. */

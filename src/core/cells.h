@@ -17,7 +17,7 @@ typedef struct {
     size_t *start;     /* n_cells + 1: items of cell c are item[start[c] .. start[c+1]) */
     uint32_t *item;    /* particle indices, ascending within each cell */
     uint32_t *cell_of; /* cell of each binned particle */
-    uint8_t *mark;     /* n_cells: cells_mark's flags */
+    uint8_t *mark;     /* n_cells: cells_mark's flags (bit 0: in the cell, 1: around it) */
     double *xs[DIM];   /* their positions in item order, during neighbours_build only (NULL
                           after it): in the room the caller lends, or else in own_xs */
     double *own_xs;    /* DIM x own_xs_capacity doubles, allocated only when no room is lent */
@@ -110,16 +110,15 @@ static inline bool neighbour_row_has_ghosts(const neighbour_list *nl, size_t i)
 #define CELL_MIN_STRIPS      16
 #define CELL_STRIP_PARTICLES (NEIGHBOUR_WINDOW / 2)
 
-#define cells_setup         DIM_NAME(cells_setup)
-#define cells_column        DIM_NAME(cells_column)
-#define cells_n_strips      DIM_NAME(cells_n_strips)
-#define cells_mark          DIM_NAME(cells_mark)
-#define cells_marked_around DIM_NAME(cells_marked_around)
-#define cells_free          DIM_NAME(cells_free)
-#define cells_bin           DIM_NAME(cells_bin)
-#define cells_sort_order    DIM_NAME(cells_sort_order)
-#define neighbours_build    DIM_NAME(neighbours_build)
-#define neighbours_free     DIM_NAME(neighbours_free)
+#define cells_setup      DIM_NAME(cells_setup)
+#define cells_column     DIM_NAME(cells_column)
+#define cells_n_strips   DIM_NAME(cells_n_strips)
+#define cells_mark       DIM_NAME(cells_mark)
+#define cells_free       DIM_NAME(cells_free)
+#define cells_bin        DIM_NAME(cells_bin)
+#define cells_sort_order DIM_NAME(cells_sort_order)
+#define neighbours_build DIM_NAME(neighbours_build)
+#define neighbours_free  DIM_NAME(neighbours_free)
 
 /* Lays out cells of side >= cell_size over the box [lo, hi]; particles outside it are
  * clamped into the border cells (still found, just less efficiently). `spacing` is the
@@ -132,12 +131,16 @@ void cells_free(cell_grid *g);
  * box as binning clamps it. */
 int cells_column(const cell_grid *g, double x);
 size_t cells_n_strips(const cell_grid *g);
-/* mark[c] = whether cell c holds a binned particle j < n with flag[j] set. */
+/* Marks the cells that hold a binned particle j < n with flag[j] set, and those beside them,
+ * for cells_marked_around. */
 void cells_mark(cell_grid *g, const uint8_t *flag, size_t n);
-/* Whether a cell around the cell of position x is marked: the 3^DIM cells a neighbour row
- * of a particle at x is scanned from (cells_mark before, with the binning's positions). No
- * marked neighbour can lie in a row where this is false. */
-bool cells_marked_around(const cell_grid *g, const double x[DIM]);
+/* Whether the cell of binned particle i, or one beside it, holds a particle cells_mark
+ * marked: the 3^DIM cells a neighbour row of i is scanned from (with the binning's positions).
+ * No marked neighbour can lie in a row where this is false. */
+static inline bool cells_marked_around(const cell_grid *g, size_t i)
+{
+    return g->mark[g->cell_of[i]] & 2;
+}
 /* The first column of cells of strip k (of the box's end for k = cells_n_strips). */
 static inline int cells_strip_column(const cell_grid *g, size_t k) { return (int)k * g->strip; }
 /* The strip that holds position x along x. */

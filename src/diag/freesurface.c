@@ -113,7 +113,7 @@ void freesurface_region(const kernel *k, particles *p, const neighbour_list *nl,
             continue;
         }
         vec xi = vec_load(p->x, i);
-        if (!cells_marked_around(g, xi.c)) {
+        if (!cells_marked_around(g, i)) {
             p->surface[i] = SURFACE_INTERIOR;
             continue;
         }
