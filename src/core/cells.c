@@ -1,6 +1,7 @@
 /* cells: binning by counting sort and gather-style neighbour lists. */
 #include "core/cells.h"
 #include "core/cells_scan.h"
+#include "core/team_loop.h"
 #include "core/vec.h"
 
 #include <stdlib.h>
@@ -319,26 +320,28 @@ static int build_rows(neighbour_list *nl, const cell_grid *g, double *const x[DI
         if (reserve_rows(nl, n_rows)) return -1;
         int32_t cap = (int32_t)nl->row_capacity, most = 0;
         bool misfit = false;
+        TEAM_LOOP_SHARES(q, n_rows, TEAM_CHUNK);
 #pragma omp parallel reduction(max : most) reduction(|| : misfit)
         {
             /* the scan's row and distances, the room of the split, and the row laid out */
             int32_t entries[cap], skin[cap + CELLS_SPLIT_SLACK], row[cap + CELLS_SPLIT_SLACK];
             double r2[cap];
             scan_row scanned = {.entries = entries, .r2 = r2, .cap = cap};
-#pragma omp for schedule(static)
-            for (size_t i = 0; i < n_rows; i++) {
-                size_t at = i * (size_t)cap;
-                int32_t k =
-                    row_of(g, x, i, r2max, near2, scanned, row, skin, nl->near + i, scan, split);
-                if (k <= cap) { /* else the row is not whole, and the build is redone */
-                    if (nl->wide)
-                        memcpy(nl->index + at, row, (size_t)k * sizeof *row);
-                    else if (!pack_row(row, k, (int32_t)n_rows, nl->packed + at, nl->base + 2 * i))
-                        misfit = true;
+            TEAM_LOOP_FOR (&q, begin, end)
+                for (size_t i = begin; i < end; i++) {
+                    size_t at = i * (size_t)cap;
+                    int32_t k = row_of(g, x, i, r2max, near2, scanned, row, skin, nl->near + i,
+                                       scan, split);
+                    if (k <= cap) { /* else the row is not whole, and the build is redone */
+                        if (nl->wide)
+                            memcpy(nl->index + at, row, (size_t)k * sizeof *row);
+                        else if (!pack_row(row, k, (int32_t)n_rows, nl->packed + at,
+                                           nl->base + 2 * i))
+                            misfit = true;
+                    }
+                    nl->count[i] = k;
+                    if (k > most) most = k;
                 }
-                nl->count[i] = k;
-                if (k > most) most = k;
-            }
         }
         nl->longest = most;
         if (!misfit && most <= cap) return 0;

@@ -1,5 +1,6 @@
 /* freesurface: Marrone et al. 2010 and the band S_F. */
 #include "diag/freesurface.h"
+#include "core/team_loop.h"
 #include "core/pair.h"
 
 void freesurface_flat_sums(const kernel *k, double dr, int depth, mat *l, vec *s)
@@ -76,8 +77,7 @@ void freesurface_test(const kernel *k, double dr, double normal_reference, parti
                       const neighbour_list *nl)
 {
     double radius = FREESURFACE_SCAN_OVER_DR * dr;
-#pragma omp parallel for schedule(static)
-    for (size_t i = 0; i < p->n_fluid; i++) {
+    TEAM_FOR (i, p->n_fluid) {
         double lambda = p->lambda[i];
         int on_surface;
         if (lambda <= FREESURFACE_LAMBDA_FREE)
@@ -106,8 +106,7 @@ void freesurface_region(const kernel *k, particles *p, const neighbour_list *nl,
        opposite ways. Equidistant ones (a lattice's corners, a mirror-symmetric flow) share
        the choice equally, so that no neighbour order breaks a symmetry of the flow. Only
        normals of the free surface are read, and only the others' are written. */
-#pragma omp parallel for schedule(static)
-    for (size_t i = 0; i < p->n_fluid; i++) {
+    TEAM_FOR (i, p->n_fluid) {
         if (p->is_free[i]) {
             p->surface[i] = SURFACE_FREE;
             continue;

@@ -1,6 +1,7 @@
 /* fields: per-step geometry, the shifting and correction velocities and the frozen diffusion
  * terms, each pass summing a row a block of entries at a time (core/pair_block.h). */
 #include "scheme/fields.h"
+#include "core/team_loop.h"
 #include "diag/freesurface.h"
 #include "physics/diffusion.h"
 #include "physics/shifting.h"
@@ -98,8 +99,7 @@ void fields_geometry(const physics_params *pp, const tank *t, particles *p,
 {
     const kernel *k = &pp->k;
     __auto_type sums_of = geometry_sums_form();
-#pragma omp parallel for schedule(static)
-    for (size_t i = 0; i < p->n_fluid; i++) {
+    TEAM_FOR (i, p->n_fluid) {
         vec xi = vec_load(p->x, i), ui = vec_load(p->u, i);
         neighbour_sums s = sums_of(k, p, nl, i);
         double lambda = mat_min_eigenvalue(&s.l);
@@ -326,8 +326,7 @@ void fields_shifting_and_correction(const physics_params *pp, particles *p,
 {
     __auto_type sums_of = shift_row_sums_of_form();
     bool mass = diffusion && diffusion->mass;
-#pragma omp parallel for schedule(static)
-    for (size_t i = 0; i < p->n_fluid; i++) {
+    TEAM_FOR (i, p->n_fluid) {
         bool diffuse = diffusion && !neighbour_row_has_ghosts(nl, i);
         if (p->lambda[i] < SHIFTING_LAMBDA_MIN) { /* neither moves it */
             if (shift) vec_store(p->shift, i, vec_zero());
@@ -372,8 +371,7 @@ static void diffuse_rows(const physics_params *pp, particles *p, const neighbour
                          const step_diffusion *diffusion, diffusion_rows rows)
 {
     __auto_type sums_of = diffusion_sums_of_form();
-#pragma omp parallel for schedule(static)
-    for (size_t i = 0; i < p->n_fluid; i++) {
+    TEAM_FOR (i, p->n_fluid) {
         if (rows == DIFFUSION_ROWS_AT_WALLS && !neighbour_row_has_ghosts(nl, i)) continue;
         diffusion_sums s = sums_of(pp, p, nl, i, diffusion->mass);
         store_diffusion(p, i, &s, diffusion->dt);

@@ -4,6 +4,7 @@
  * function of src/physics (named in its comments) written out in lane types in the same order,
  * so every width gives the scalar form's bits; tests/test_lanes.c holds them to it. */
 #include "core/lane_pairs.h"
+#include "core/team_loop.h"
 #include "scheme/rhs_particle.h"
 
 /* The same sums for the particles i0 .. i0 + LANES - 1, one per lane (core/lanes.h): every
@@ -112,12 +113,16 @@ LANES_TARGET static void rhs_block_lanes(const physics_params *pp, const particl
     RHS_FOR_VARIANT(pp, eta, RHS_BLOCK_VARIANT)
 }
 
-/* Each particle's rates are its own, whichever thread and block compute them. */
+/* Each particle's rates are its own, whichever thread and block compute them (a team loop,
+ * core/team_loop.h). */
 void RHS_COMPUTE_LANES(const physics_params *pp, const particles *p, const neighbour_list *nl,
                        const tank_frame *frame, double eta, const rates *out)
 {
     size_t n = p->n_fluid;
-#pragma omp parallel for schedule(static)
-    for (size_t i0 = 0; i0 < n; i0 += LANES)
-        rhs_block_lanes(pp, p, nl, i0, i0 + LANES < n ? i0 + LANES : n, frame, eta, out);
+    _Static_assert(TEAM_CHUNK % LANES == 0, "a chunk holds whole blocks");
+    TEAM_LOOP_SHARES(q, n, TEAM_CHUNK);
+#pragma omp parallel
+    TEAM_LOOP_FOR (&q, begin, end)
+        for (size_t i0 = begin; i0 < end; i0 += LANES)
+            rhs_block_lanes(pp, p, nl, i0, i0 + LANES < end ? i0 + LANES : end, frame, eta, out);
 }

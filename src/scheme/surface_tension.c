@@ -1,5 +1,6 @@
 /* surface_tension: interface function, curvature, the CSF force and its momentum balance. */
 #include "scheme/surface_tension.h"
+#include "core/team_loop.h"
 #include "boundary/tank.h"
 #include "core/reduce.h"
 #include "diag/freesurface.h"
@@ -72,8 +73,7 @@ static void interface_and_normals(const surface_tension_params *st, const kernel
                                   const neighbour_list *nl, surface_tension_work *w,
                                   double *const normal[DIM])
 {
-#pragma omp parallel for schedule(static)
-    for (size_t i = 0; i < p->n_fluid; i++) {
+    TEAM_FOR (i, p->n_fluid) {
         double delta = 0.0, band = 0.0;
         vec n = vec_zero();
         if (p->surface[i] != SURFACE_INTERIOR) {
@@ -110,8 +110,7 @@ static void smoothed_normals(const kernel *k, const particles *p, const neighbou
                              const bodies_domain *d, double *const normal[DIM],
                              double *const smooth[DIM])
 {
-#pragma omp parallel for schedule(static)
-    for (size_t i = 0; i < p->n_fluid; i++) {
+    TEAM_FOR (i, p->n_fluid) {
         vec xi = vec_load(p->x, i), sum = vec_scale(vec_load(normal, i), k->norm * p->vol[i]);
         if (p->surface[i] == SURFACE_FREE) {
             pair pr;
@@ -131,8 +130,7 @@ static void surface_curvature(const surface_tension_params *st, const kernel *k,
                               const neighbour_list *nl, const bodies_domain *d,
                               double *const normal[DIM], double *kappa)
 {
-#pragma omp parallel for schedule(static)
-    for (size_t i = 0; i < p->n_fluid; i++) {
+    TEAM_FOR (i, p->n_fluid) {
         kappa[i] = 0.0;
         if (p->surface[i] != SURFACE_FREE) continue;
         vec xi = vec_load(p->x, i), ni = vec_load(normal, i);
@@ -161,8 +159,7 @@ static void band_force(const surface_tension_params *st, const kernel *k, partic
                        const neighbour_list *nl, double *const smooth[DIM],
                        const double *kappa_surface, const double *band_sum)
 {
-#pragma omp parallel for schedule(static)
-    for (size_t i = 0; i < p->n_fluid; i++) {
+    TEAM_FOR (i, p->n_fluid) {
         double kappa = 0.0;
         vec force = vec_zero();
         if (p->interface[i] > 0.0) {

@@ -1,5 +1,6 @@
 /* volume_correction: the mismatch field e and the correction velocity. */
 #include "scheme/volume_correction.h"
+#include "core/team_loop.h"
 #include "boundary/tank.h"
 #include "diag/freesurface.h"
 #include "physics/shifting.h"
@@ -27,8 +28,7 @@ static void interior_mismatch(double lattice_sum, particles *p)
  * interior entries and writes only the others, so the loop has no race. */
 static void surface_band_mismatch(const kernel *k, particles *p, const neighbour_list *nl)
 {
-#pragma omp parallel for schedule(static)
-    for (size_t i = 0; i < p->n_fluid; i++) {
+    TEAM_FOR (i, p->n_fluid) {
         if (p->surface[i] == SURFACE_INTERIOR) continue;
         vec xi = vec_load(p->x, i);
         double sum = 0.0, weight = 0.0;
