@@ -73,15 +73,21 @@ int cells_column(const cell_grid *g, double x) { return cell_coord(g, 0, x); }
 
 size_t cells_n_strips(const cell_grid *g) { return (size_t)((g->n[0] + g->strip - 1) / g->strip); }
 
-static inline size_t cell_index(const cell_grid *g, const int c[DIM])
+/* The index of cell c, which lies in strip `strip` (c[0] / g->strip) */
+static inline size_t cell_index_in_strip(const cell_grid *g, int strip, const int c[DIM])
 {
-    int strip = c[0] / g->strip, x0 = strip * g->strip;
+    int x0 = strip * g->strip;
     int width = g->n[0] - x0 < g->strip ? g->n[0] - x0 : g->strip;
     size_t rows = 1; /* the rows of cells along x in one strip: n[1] (x n[2]) */
     for (int d = 1; d < DIM; d++) rows *= (size_t)g->n[d];
     size_t row = (size_t)c[DIM - 1];
     for (int d = DIM - 2; d >= 1; d--) row = row * (size_t)g->n[d] + (size_t)c[d];
     return (size_t)x0 * rows + row * (size_t)width + (size_t)(c[0] - x0);
+}
+
+static inline size_t cell_index(const cell_grid *g, const int c[DIM])
+{
+    return cell_index_in_strip(g, c[0] / g->strip, c);
 }
 
 int cells_bin(cell_grid *g, double *const x[DIM], size_t n)
@@ -193,13 +199,13 @@ static void scan_neighbours(const cell_grid *g, double *const x[DIM], size_t i, 
         for (c[1] = lo[1]; c[1] <= hi[1]; c[1]++)
             /* cells adjacent along x are contiguous in the item array within a strip: one
              * run of cells, or two where the row crosses into the next strip */
-            for (int from = lo[0]; from <= hi[0];) {
-                int strip_end = (from / g->strip + 1) * g->strip - 1;
+            for (int from = lo[0], strip = lo[0] / g->strip; from <= hi[0]; strip++) {
+                int strip_end = (strip + 1) * g->strip - 1;
                 int to = hi[0] < strip_end ? hi[0] : strip_end;
                 c[0] = from;
-                size_t first = g->start[cell_index(g, c)];
+                size_t first = g->start[cell_index_in_strip(g, strip, c)];
                 c[0] = to;
-                size_t last = g->start[cell_index(g, c) + 1];
+                size_t last = g->start[cell_index_in_strip(g, strip, c) + 1];
                 scan(g, first, last, xi, (uint32_t)i, r2max, row);
                 from = to + 1;
             }
@@ -290,14 +296,14 @@ static int place_positions(cell_grid *g, size_t binned, cells_room lent)
  * row's count, which may exceed cap (then the row is not whole and the build is redone).
  * `scanned` is room for the scan's row and its squared distances, `skin` for the split. */
 static int32_t row_of(const cell_grid *g, double *const x[DIM], size_t i, double r2max,
-                      double near2, scan_row scanned, int32_t *row, int32_t *skin, int32_t *near,
+                      double near2, scan_row *scanned, int32_t *row, int32_t *skin, int32_t *near,
                       cells_scan_fn scan, cells_split_fn split)
 {
-    scanned.found = 0;
-    scan_neighbours(g, x, i, r2max, &scanned, scan);
-    if (scanned.found <= scanned.cap)
-        *near = split(scanned.entries, scanned.r2, scanned.found, near2, row, skin);
-    return scanned.found;
+    scanned->found = 0;
+    scan_neighbours(g, x, i, r2max, scanned, scan);
+    if (scanned->found <= scanned->cap)
+        *near = split(scanned->entries, scanned->r2, scanned->found, near2, row, skin);
+    return scanned->found;
 }
 
 /* neighbours_build's rows, from the positions' copy in g->xs. */
@@ -330,7 +336,7 @@ static int build_rows(neighbour_list *nl, const cell_grid *g, double *const x[DI
             TEAM_LOOP_FOR (&q, begin, end)
                 for (size_t i = begin; i < end; i++) {
                     size_t at = i * (size_t)cap;
-                    int32_t k = row_of(g, x, i, r2max, near2, scanned, row, skin, nl->near + i,
+                    int32_t k = row_of(g, x, i, r2max, near2, &scanned, row, skin, nl->near + i,
                                        scan, split);
                     if (k <= cap) { /* else the row is not whole, and the build is redone */
                         if (nl->wide)
