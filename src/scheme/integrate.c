@@ -2,6 +2,7 @@
  * surface-tension force is taken again at every stage (scheme/surface_tension.h). */
 #include "boundary/tank.h"
 #include "core/reduce.h"
+#include "core/team_loop.h"
 #include "scheme/passes.h"
 #include "scheme/solver.h"
 
@@ -105,8 +106,8 @@ static void rk_accumulate(solver *s, double *const *y, double *const *rate, int 
 {
     particles *p = &s->p;
     bool first = stage == 0, last = stage == 3;
-#pragma omp parallel for schedule(static)
-    for (size_t i = 0; i < p->n_fluid; i++) {
+    /* a team loop, as the right-hand side before it: whoever wrote a particle's rates */
+    TEAM_FOR (i, p->n_fluid) {
         vec transport = rhs_transport_velocity(&s->pp, p, i);
         for (int v = 0; v < DIM; v++)
             rk_variable(s->sum[v], y[v], s->y0[v], i, transport.c[v], w, c, first, last);
