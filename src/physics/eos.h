@@ -4,7 +4,9 @@
 
 #include <math.h>
 
-/* p = c0^2 (rho - rho0), Eq. (3) */
+/* p = c0^2 (rho - rho0), Eq. (3). The right-hand side's lanes take a fluid neighbour's p as
+ * this function of its rho (scheme/rhs_lanes.h), which solver_update_eos and EdBC keep to the
+ * bit: an equation of state changed here is changed there. */
 static inline double eos_pressure(double rho, double rho0, double c0)
 {
     return c0 * c0 * (rho - rho0);
