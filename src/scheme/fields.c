@@ -186,11 +186,12 @@ typedef struct {
     double rho, m, rate;
 } diffusion_sums;
 
-/* diffusion_sums lane by lane, and what of particle i they read at every pair */
+/* diffusion_sums lane by lane */
 typedef struct {
     pair_block rho, m, rate;
 } diffusion_block_sums;
 
+/* What of particle i its diffusion terms read at every pair */
 typedef struct {
     vec grad_rho;
     double rho, nu_delta, m, vol;

@@ -183,8 +183,8 @@ static const step_pass prepare_passes[] = {
      bounce_back},
     /* the walls' images take the per-step fields of their sources (tank_mirror_step_fields) */
     {"frozen terms",
-     F(x) | F(u) | F(rho) | F(vol) | F(grad_rho) | F(nu_delta) | F(nu_t) | F(surface) | F(shift) |
-         F(correction),
+     F(x) | F(u) | F(rho) | F(m) | F(vol) | F(grad_rho) | F(nu_delta) | F(nu_t) | F(surface) |
+         F(shift) | F(correction),
      F(diff_rho) | F(diff_m), NULL, frozen_terms},
     {"surface tension", F(x) | F(vol) | F(surface) | F(normal),
      F(interface) | F(curvature) | F(st_force), has_surface_tension, surface_tension},
