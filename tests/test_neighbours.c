@@ -12,6 +12,8 @@
 #include <string.h>
 #include <cmocka.h>
 
+#include <omp.h>
+
 #include "check.h"
 
 static int compare_int32(const void *a, const void *b)
@@ -280,6 +282,39 @@ static void test_rows_beyond_window(void **state)
     particles_free(&p);
 }
 
+/* The binning on 1 to 4 threads (each counts and fills its share of the particles): the same
+ * cells, starts and items, and each cell's particles in ascending order, as one thread sorts
+ * them. */
+static void test_bin_any_thread_count(void **state)
+{
+    (void)state;
+    size_t n = 3001;
+    particles p;
+    assert_int_equal(particles_init(&p, n), 0);
+    scatter(&p, n, 5);
+    double lo[DIM], hi[DIM];
+    for (int d = 0; d < DIM; d++) lo[d] = 0.0, hi[d] = 1.0;
+    cell_grid one = {0}, grid = {0};
+    assert_int_equal(cells_setup(&one, lo, hi, 0.07, 0.0), 0);
+    assert_int_equal(cells_setup(&grid, lo, hi, 0.07, 0.0), 0);
+    omp_set_num_threads(1);
+    assert_int_equal(cells_bin(&one, p.x, n), 0);
+    for (size_t c = 0; c < one.n_cells; c++)
+        for (size_t m = one.start[c] + 1; m < one.start[c + 1]; m++)
+            assert_true(one.item[m] > one.item[m - 1]);
+    assert_int_equal(one.start[one.n_cells], n);
+    for (int threads = 2; threads <= 4; threads++) {
+        omp_set_num_threads(threads);
+        assert_int_equal(cells_bin(&grid, p.x, n), 0);
+        assert_memory_equal(grid.cell_of, one.cell_of, n * sizeof *one.cell_of);
+        assert_memory_equal(grid.start, one.start, (one.n_cells + 1) * sizeof *one.start);
+        assert_memory_equal(grid.item, one.item, n * sizeof *one.item);
+    }
+    cells_free(&one);
+    cells_free(&grid);
+    particles_free(&p);
+}
+
 /* After the sort, particles of one cell are contiguous and cells come in ascending order. */
 static void test_sort_by_cell(void **state)
 {
@@ -325,6 +360,7 @@ int main(void)
         cmocka_unit_test(test_brute_force),
         cmocka_unit_test(test_rows_beyond_window),
         cmocka_unit_test(test_sort_by_cell),
+        cmocka_unit_test(test_bin_any_thread_count),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -56,6 +56,7 @@ void cells_free(cell_grid *g)
     free(g->start);
     free(g->item);
     free(g->cell_of);
+    free(g->counts);
     free(g->mark);
     free(g->own_xs);
     memset(g, 0, sizeof *g);
@@ -90,6 +91,18 @@ static inline size_t cell_index(const cell_grid *g, const int c[DIM])
     return cell_index_in_strip(g, c[0] / g->strip, c);
 }
 
+/* Room for each of `threads` threads' counts in every cell (cells_bin) */
+static int reserve_counts(cell_grid *g, int threads)
+{
+    size_t need = (size_t)threads * g->n_cells;
+    if (need <= g->counts_capacity) return 0;
+    uint32_t *counts = realloc(g->counts, need * sizeof *counts);
+    if (!counts) return -1;
+    g->counts = counts;
+    g->counts_capacity = need;
+    return 0;
+}
+
 int cells_bin(cell_grid *g, double *const x[DIM], size_t n)
 {
     if (n > g->item_capacity) {
@@ -101,22 +114,40 @@ int cells_bin(cell_grid *g, double *const x[DIM], size_t n)
         g->cell_of = cell_of;
         g->item_capacity = n;
     }
-#pragma omp parallel for schedule(static)
-    for (size_t i = 0; i < n; i++) {
-        int c[DIM];
-        for (int d = 0; d < DIM; d++) c[d] = cell_coord(g, d, x[d][i]);
-        g->cell_of[i] = (uint32_t)cell_index(g, c);
+    if (reserve_counts(g, team_loop_threads())) return -1;
+        /* A counting sort, stable: each thread counts its share of the particles in every cell,
+           each cell's places go to the threads' shares in order, and each thread fills its own in
+           ascending particle order, so a cell lists its particles in ascending order whatever
+           the thread count. */
+#pragma omp parallel
+    {
+        int t = team_thread(), threads = team_threads();
+        size_t first = n * (size_t)t / (size_t)threads, end = n * (size_t)(t + 1) / (size_t)threads;
+        uint32_t *mine = g->counts + (size_t)t * g->n_cells;
+        memset(mine, 0, g->n_cells * sizeof *mine);
+        for (size_t i = first; i < end; i++) {
+            int c[DIM];
+            for (int d = 0; d < DIM; d++) c[d] = cell_coord(g, d, x[d][i]);
+            g->cell_of[i] = (uint32_t)cell_index(g, c);
+            mine[g->cell_of[i]]++;
+        }
+#pragma omp barrier
+#pragma omp single
+        {
+            size_t place = 0;
+            for (size_t c = 0; c < g->n_cells; c++) {
+                g->start[c] = place;
+                for (int u = 0; u < threads; u++) { /* the count becomes the share's place */
+                    uint32_t *count = &g->counts[(size_t)u * g->n_cells + c];
+                    size_t k = *count;
+                    *count = (uint32_t)place;
+                    place += k;
+                }
+            }
+            g->start[g->n_cells] = place;
+        }
+        for (size_t i = first; i < end; i++) g->item[mine[g->cell_of[i]]++] = (uint32_t)i;
     }
-    memset(g->start, 0, (g->n_cells + 1) * sizeof *g->start);
-    for (size_t i = 0; i < n; i++) g->start[g->cell_of[i] + 1]++;
-    for (size_t c = 0; c < g->n_cells; c++) g->start[c + 1] += g->start[c];
-    /* fill in ascending particle order: the sort is stable */
-    for (size_t i = 0; i < n; i++) {
-        size_t c = g->cell_of[i];
-        g->item[g->start[c]++] = (uint32_t)i;
-    }
-    for (size_t c = g->n_cells; c > 0; c--) g->start[c] = g->start[c - 1];
-    g->start[0] = 0;
     return 0;
 }
 

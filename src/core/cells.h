@@ -17,11 +17,12 @@ typedef struct {
     size_t *start;     /* n_cells + 1: items of cell c are item[start[c] .. start[c+1]) */
     uint32_t *item;    /* particle indices, ascending within each cell */
     uint32_t *cell_of; /* cell of each binned particle */
+    uint32_t *counts;  /* threads x n_cells: cells_bin's counts of each thread's share */
     uint8_t *mark;     /* n_cells: cells_mark's flags (bit 0: in the cell, 1: around it) */
     double *xs[DIM];   /* their positions in item order, during neighbours_build only (NULL
                           after it): in the room the caller lends, or else in own_xs */
     double *own_xs;    /* DIM x own_xs_capacity doubles, allocated only when no room is lent */
-    size_t item_capacity, cells_capacity, own_xs_capacity;
+    size_t item_capacity, cells_capacity, own_xs_capacity, counts_capacity;
 } cell_grid;
 
 /* Memory a caller lends neighbours_build for the copy of the binned positions in item order

@@ -48,10 +48,30 @@ static inline uint64_t team_range(uint32_t front, uint32_t back)
     return (uint64_t)front | (uint64_t)back << 32;
 }
 
+/* The threads a parallel region may have */
 static inline int team_loop_threads(void)
 {
 #ifdef _OPENMP
     return omp_get_max_threads();
+#else
+    return 1;
+#endif
+}
+
+/* Within a parallel region: this thread's number, and the region's threads */
+static inline int team_thread(void)
+{
+#ifdef _OPENMP
+    return omp_get_thread_num();
+#else
+    return 0;
+#endif
+}
+
+static inline int team_threads(void)
+{
+#ifdef _OPENMP
+    return omp_get_num_threads();
 #else
     return 1;
 #endif
@@ -76,13 +96,8 @@ static inline void team_loop_init(team_loop *q, team_share *shares, int threads,
 
 static inline team_cursor team_cursor_start(const team_loop *q)
 {
-#ifdef _OPENMP
-    int t = omp_get_thread_num();
-#else
-    int t = 0;
-#endif
     (void)q;
-    return (team_cursor){t, t};
+    return (team_cursor){team_thread(), team_thread()};
 }
 
 /* Takes a chunk from the front of share s (own) or its back (another's); false if none is
