@@ -170,14 +170,20 @@ void neighbours_free(neighbour_list *nl)
     memset(nl, 0, sizeof *nl);
 }
 
-/* Whether a cell of the 3^DIM around cell c (by its coordinates) holds a mark */
-static bool marked_around(const cell_grid *g, const int c0[DIM])
+/* The cells' coordinates lo[d] .. hi[d] of the 3^DIM cells around cell c0, within the box */
+static inline void cells_around(const cell_grid *g, const int c0[DIM], int lo[DIM], int hi[DIM])
 {
-    int lo[DIM], hi[DIM];
     for (int d = 0; d < DIM; d++) {
         lo[d] = c0[d] > 0 ? c0[d] - 1 : 0;
         hi[d] = c0[d] < g->n[d] - 1 ? c0[d] + 1 : g->n[d] - 1;
     }
+}
+
+/* Whether a cell of the 3^DIM around cell c (by its coordinates) holds a mark */
+static bool marked_around(const cell_grid *g, const int c0[DIM])
+{
+    int lo[DIM], hi[DIM];
+    cells_around(g, c0, lo, hi);
     int c[DIM];
 #if DIM == 3
     for (c[2] = lo[2]; c[2] <= hi[2]; c[2]++)
@@ -217,11 +223,8 @@ static void scan_neighbours(const cell_grid *g, double *const x[DIM], size_t i, 
                             scan_row *row, cells_scan_fn scan)
 {
     int c0[DIM], lo[DIM], hi[DIM];
-    for (int d = 0; d < DIM; d++) {
-        c0[d] = cell_coord(g, d, x[d][i]);
-        lo[d] = c0[d] > 0 ? c0[d] - 1 : 0;
-        hi[d] = c0[d] < g->n[d] - 1 ? c0[d] + 1 : g->n[d] - 1;
-    }
+    for (int d = 0; d < DIM; d++) c0[d] = cell_coord(g, d, x[d][i]);
+    cells_around(g, c0, lo, hi);
     vec xi = vec_load(x, i);
     int c[DIM];
 #if DIM == 3
