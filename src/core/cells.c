@@ -114,11 +114,11 @@ int cells_bin(cell_grid *g, double *const x[DIM], size_t n)
         g->cell_of = cell_of;
         g->item_capacity = n;
     }
+    /* A counting sort, stable: each thread counts its share of the particles in every cell,
+       each cell's places go to the threads' shares in order, and each thread fills its own in
+       ascending particle order, so a cell lists its particles in ascending order whatever the
+       thread count. */
     if (reserve_counts(g, team_loop_threads())) return -1;
-        /* A counting sort, stable: each thread counts its share of the particles in every cell,
-           each cell's places go to the threads' shares in order, and each thread fills its own in
-           ascending particle order, so a cell lists its particles in ascending order whatever
-           the thread count. */
 #pragma omp parallel
     {
         int t = team_thread(), threads = team_threads();

@@ -111,11 +111,11 @@ void freesurface_region(const kernel *k, particles *p, const neighbour_list *nl,
             p->surface[i] = SURFACE_FREE;
             continue;
         }
-        vec xi = vec_load(p->x, i);
         if (!cells_marked_around(g, i)) {
             p->surface[i] = SURFACE_INTERIOR;
             continue;
         }
+        vec xi = vec_load(p->x, i);
         double nearest2 = INFINITY;
         pair pr;
         FOR_EACH_PAIR_WHERE (k, p->x, nl, i, xi, pr, free_surface_neighbour(p, pr.j))
