@@ -21,8 +21,10 @@
  * density diffusion began to sum each row in eight interleaved partial sums (src/core/pair.c,
  * src/core/pair_block.h, src/scheme/fields.c: the sums' order, round-off, 2e-8 of a value at
  * most), and a ninth time when the shifting and the correction velocity did the same
- * (src/scheme/fields.c, src/scheme/volume_correction.*, src/core/pair_block.h). Each line is one
- * particle, in C's exact %a notation. */
+ * (src/scheme/fields.c, src/scheme/volume_correction.*, src/core/pair_block.h), and a tenth time
+ * when the cells kept the search radius as their side instead of growing to cover the box
+ * exactly (src/core/cells.c alone: the particles' order, round-off). Each line is one particle,
+ * in C's exact %a notation. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>

@@ -121,10 +121,10 @@ static inline bool neighbour_row_has_ghosts(const neighbour_list *nl, size_t i)
 #define neighbours_build DIM_NAME(neighbours_build)
 #define neighbours_free  DIM_NAME(neighbours_free)
 
-/* Lays out cells of side >= cell_size over the box [lo, hi]; particles outside it are
- * clamped into the border cells (still found, just less efficiently). `spacing` is the
- * particles' lattice spacing, which bounds the strips' width (CELL_STRIP_PARTICLES); 0: no
- * bound from it. */
+/* Lays out cubic cells of side cell_size over the box [lo, hi], the last along an axis reaching
+ * past hi; particles outside it are clamped into the border cells (still found, just less
+ * efficiently). `spacing` is the particles' lattice spacing, which bounds the strips' width
+ * (CELL_STRIP_PARTICLES); 0: no bound from it. */
 int cells_setup(cell_grid *g, const double lo[DIM], const double hi[DIM], double cell_size,
                 double spacing);
 void cells_free(cell_grid *g);

@@ -43,7 +43,7 @@ void DIM_NAME(estimate_run)(const config *cfg, const derived *dv, int threads, r
         double ghost_hi = layers(tank[d] - (lo[d] + len[d]), dv->spacing[d], dv->n_axis[d], reach);
         box *= nd;
         padded *= nd + ghost_lo + ghost_hi;
-        cells *= fmax(1.0, floor((tank[d] + 2.0 * reach) / reach)); /* cells_setup */
+        cells *= fmax(1.0, ceil((tank[d] + 2.0 * reach) / reach)); /* cells_setup */
         cell_volume *= dv->spacing[d];
     }
     /* tank_make_ghosts mirrors each particle within reach of a wall once per wall, edge and
