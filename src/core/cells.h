@@ -1,4 +1,4 @@
-/* cells: the cell list (particles binned in cubes of side >= the search radius), the sort of
+/* cells: the cell list (particles binned in cubes whose side is the search radius), the sort of
  * the fluid by cell, and per-particle neighbour lists built from it. */
 #ifndef VCSPH_CELLS_H
 #define VCSPH_CELLS_H
@@ -10,7 +10,7 @@
 
 typedef struct {
     double origin[DIM]; /* lower corner of cell (0, 0[, 0]) */
-    double size;        /* cell side >= search radius */
+    double size;        /* cell side: the search radius (cells_setup) */
     int n[DIM];         /* cells per axis */
     int strip;          /* cells per strip along x (CELL_STRIP_WIDTH, or fewer in a short box) */
     size_t n_cells;
