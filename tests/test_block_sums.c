@@ -68,7 +68,7 @@ static void shifting_and_correction_follow_their_pair_functions(solver *s)
     const physics_params *pp = &s->pp;
     particles *p = &s->p;
     neighbour_list rows = neighbours_near(&s->nl);
-    fields_shifting_and_correction(pp, p, &rows, true, true, NULL);
+    fields_shifting_and_correction(pp, p, &rows, true, true, NULL, DIFFUSION_ROWS_NONE);
     for (size_t i = 0; i < p->n_fluid; i++) {
         if (p->lambda[i] < SHIFTING_LAMBDA_MIN) continue;
         vec xi = vec_load(p->x, i), ui = vec_load(p->u, i);
@@ -105,10 +105,11 @@ static void shifting_and_correction_follow_their_pair_functions(solver *s)
     }
 }
 
-/* The step's preparation sums the diffusion of the rows away from the walls beside the
- * shifting, over the same row geometry, and the rest in the frozen terms
- * (fields_shifting_and_correction): the same operations as the diffusion pass over every row,
- * so the same bits. */
+/* The step's preparation sums the diffusion of the rows beside the shifting, over the same row
+ * geometry: every row in a frame that does not rotate (this block's), the walls' images taking
+ * their diffusion fields first, and in a rotating one the rows away from the walls, the frozen
+ * terms the others after bounce-back (scheme/passes.c). Either way the same operations as the
+ * diffusion pass over every row, so the same bits. */
 static void diffusion_beside_the_shifting_is_the_diffusion_pass(solver *s, bool mass)
 {
     particles *p = &s->p;
@@ -121,7 +122,16 @@ static void diffusion_beside_the_shifting_is_the_diffusion_pass(solver *s, bool 
     memcpy(m, p->diff_m, n * sizeof *m);
     step_diffusion diffusion = {.mass = mass, .dt = s->dt};
     tank_frame frame = solver_frame(s, s->t);
+    assert_false(frame.rotating);
     fields_frozen_terms(&s->pp, p, &rows, &frame, &diffusion, DIFFUSION_ROWS_ALL);
+    assert_memory_equal(p->diff_rho, rho, n * sizeof *rho);
+    assert_memory_equal(p->diff_m, m, n * sizeof *m);
+    /* the rotating frame's split, from zero */
+    memset(p->diff_rho, 0, n * sizeof *rho);
+    memset(p->diff_m, 0, n * sizeof *m);
+    fields_shifting_and_correction(&s->pp, p, &rows, false, false, &diffusion,
+                                   DIFFUSION_ROWS_OFF_WALLS);
+    fields_frozen_terms(&s->pp, p, &rows, &frame, &diffusion, DIFFUSION_ROWS_AT_WALLS);
     assert_memory_equal(p->diff_rho, rho, n * sizeof *rho);
     assert_memory_equal(p->diff_m, m, n * sizeof *m);
     free(rho);

@@ -40,7 +40,7 @@ static void run_passes(solver *s, const neighbour_list *nl, double *out)
     tank_frame frame = solver_frame(s, s->t);
     fields_geometry(&s->pp, &s->tank, p, nl);
     step_diffusion diffusion = {.mass = false, .dt = s->dt};
-    fields_shifting_and_correction(&s->pp, p, nl, true, true, &diffusion);
+    fields_shifting_and_correction(&s->pp, p, nl, true, true, &diffusion, DIFFUSION_ROWS_OFF_WALLS);
     fields_frozen_terms(&s->pp, p, nl, &frame, &diffusion, DIFFUSION_ROWS_AT_WALLS);
     double *next = out;
 #define COPY_SCALAR(name) memcpy(next, p->name, n * sizeof(double)), next += n;

@@ -135,6 +135,28 @@ void tank_refresh_ghosts(const tank *t, particles *p, const tank_frame *frame, d
     }
 }
 
+/* Image g's density gradient from its source i's: the dynamic part mirrored, the hydrostatic
+ * part rho f_i / c0^2 kept (tank_mirror_step_fields). */
+static inline void mirror_grad_rho(particles *p, const tank_frame *frame, double c0, size_t g,
+                                   size_t i, const ghost_map *map)
+{
+    vec force = frame_body_force(frame, vec_load(p->x, i), vec_load(p->u, i));
+    vec grad_hydro = vec_scale(force, p->rho[i] / (c0 * c0));
+    vec dynamic = vec_sub(vec_load(p->grad_rho, i), grad_hydro);
+    vec_store(p->grad_rho, g, vec_add(ghost_map_vector(map, dynamic), grad_hydro));
+}
+
+void tank_mirror_diffusion_fields(particles *p, const tank_frame *frame, double c0)
+{
+    size_t n_fluid = p->n_fluid;
+#pragma omp parallel for schedule(static)
+    for (size_t g = particles_images_begin(p); g < p->n_total; g++) {
+        size_t i = (size_t)p->ghost_source[g - n_fluid];
+        mirror_grad_rho(p, frame, c0, g, i, particle_ghost_map(p, g));
+        p->nu_delta[g] = p->nu_delta[i];
+    }
+}
+
 void tank_mirror_step_fields(particles *p, const tank_frame *frame, double c0)
 {
     size_t n_fluid = p->n_fluid;
@@ -142,10 +164,7 @@ void tank_mirror_step_fields(particles *p, const tank_frame *frame, double c0)
     for (size_t g = particles_images_begin(p); g < p->n_total; g++) {
         size_t i = (size_t)p->ghost_source[g - n_fluid];
         const ghost_map *map = particle_ghost_map(p, g);
-        vec force = frame_body_force(frame, vec_load(p->x, i), vec_load(p->u, i));
-        vec grad_hydro = vec_scale(force, p->rho[i] / (c0 * c0));
-        vec dynamic = vec_sub(vec_load(p->grad_rho, i), grad_hydro);
-        vec_store(p->grad_rho, g, vec_add(ghost_map_vector(map, dynamic), grad_hydro));
+        mirror_grad_rho(p, frame, c0, g, i, map);
 #define GHOST_COPY(type, name, flags, snapshot, comment)                                           \
     if ((flags)&FIELD_GHOST_COPY) p->name[g] = p->name[i];
 #define GHOST_MIRROR(type, name, flags, snapshot, comment)                                         \

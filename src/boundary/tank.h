@@ -34,11 +34,12 @@ tank tank_box(const double size[DIM], wall_kind wall);
 
 static inline wall_plane tank_plane(const tank *t, int k) { return t->planes[k]; }
 
-#define tank_make_ghosts        DIM_NAME(tank_make_ghosts)
-#define tank_refresh_ghosts     DIM_NAME(tank_refresh_ghosts)
-#define tank_mirror_step_fields DIM_NAME(tank_mirror_step_fields)
-#define tank_bounce_back        DIM_NAME(tank_bounce_back)
-#define tank_copy_to_ghosts     DIM_NAME(tank_copy_to_ghosts)
+#define tank_make_ghosts             DIM_NAME(tank_make_ghosts)
+#define tank_refresh_ghosts          DIM_NAME(tank_refresh_ghosts)
+#define tank_mirror_step_fields      DIM_NAME(tank_mirror_step_fields)
+#define tank_mirror_diffusion_fields DIM_NAME(tank_mirror_diffusion_fields)
+#define tank_bounce_back             DIM_NAME(tank_bounce_back)
+#define tank_copy_to_ghosts          DIM_NAME(tank_copy_to_ghosts)
 
 /* Rebuilds the ghost list: every fluid particle within `reach` of a wall gets an image across
  * it, and across each pair (and triple) of walls near an edge or corner. Only the list
@@ -61,6 +62,12 @@ void tank_refresh_ghosts(const tank *t, particles *p, const tank_frame *frame, d
  * = mirror of the source's dynamic part plus the hydrostatic gradient rho f_i / c0^2, consistent
  * with the hydrostatic continuation above. */
 void tank_mirror_step_fields(particles *p, const tank_frame *frame, double c0);
+
+/* Of those, what the density diffusion (Eq. 5) reads at an image: the density gradient and
+ * the diffusion coefficient. In a frame that does not rotate they are final once the step's
+ * geometry and EdBC have run (the body force does not depend on the velocity), so the
+ * diffusion of a row at a wall can be summed before bounce-back (scheme/passes.c). */
+void tank_mirror_diffusion_fields(particles *p, const tank_frame *frame, double c0);
 
 /* A per-particle scalar of the fluid copied to its ghosts (a field that is even across the
  * walls: the ghost carries its source's value). */

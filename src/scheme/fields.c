@@ -319,16 +319,17 @@ static void store_diffusion(particles *p, size_t i, const diffusion_sums *s, dou
 /* The diffusion of a row that reaches no wall image reads only fields that are final once
  * EdBC has corrected the densities and volumes (the geometry's gradients and coefficients,
  * rho, V, m: bounce-back, between this pass and the frozen terms, changes velocities only),
- * so it is summed here, over the shifting's row geometry. A row that reaches one waits for
- * the wall images' copies of the per-step fields (fields_frozen_terms). */
+ * so it is summed here, over the shifting's row geometry. A row that reaches one needs the
+ * wall images' density gradients and coefficients, which in a rotating frame follow the
+ * bounced velocities (fields_frozen_terms then sums it). */
 void fields_shifting_and_correction(const physics_params *pp, particles *p,
                                     const neighbour_list *nl, bool shift, bool correct,
-                                    const step_diffusion *diffusion)
+                                    const step_diffusion *diffusion, diffusion_rows rows)
 {
     __auto_type sums_of = shift_row_sums_of_form();
     bool mass = diffusion && diffusion->mass;
     TEAM_FOR (i, p->n_fluid) {
-        bool diffuse = diffusion && !neighbour_row_has_ghosts(nl, i);
+        bool diffuse = diffusion && diffusion_rows_include(rows, neighbour_row_has_ghosts(nl, i));
         if (p->lambda[i] < SHIFTING_LAMBDA_MIN) { /* neither moves it */
             if (shift) vec_store(p->shift, i, vec_zero());
             if (correct) vec_store(p->correction, i, vec_zero());
@@ -373,7 +374,7 @@ static void diffuse_rows(const physics_params *pp, particles *p, const neighbour
 {
     __auto_type sums_of = diffusion_sums_of_form();
     TEAM_FOR (i, p->n_fluid) {
-        if (rows == DIFFUSION_ROWS_AT_WALLS && !neighbour_row_has_ghosts(nl, i)) continue;
+        if (!diffusion_rows_include(rows, neighbour_row_has_ghosts(nl, i))) continue;
         diffusion_sums s = sums_of(pp, p, nl, i, diffusion->mass);
         store_diffusion(p, i, &s, diffusion->dt);
     }
@@ -384,8 +385,8 @@ void fields_frozen_terms(const physics_params *pp, particles *p, const neighbour
                          diffusion_rows rows)
 {
     tank_mirror_step_fields(p, frame, pp->c0);
-    if (diffusion)
-        diffuse_rows(pp, p, nl, diffusion, rows);
-    else
+    if (diffusion) {
+        if (rows != DIFFUSION_ROWS_NONE) diffuse_rows(pp, p, nl, diffusion, rows);
+    } else
         for (size_t i = 0; i < p->n_fluid; i++) p->diff_rho[i] = p->diff_m[i] = 0.0;
 }

@@ -37,19 +37,31 @@ typedef struct {
     double dt;
 } step_diffusion;
 
+/* The rows whose diffusion a pass sums: none, those that reach no wall image (or halo
+ * particle: neighbour_row_has_ghosts), those that reach one, or all. */
+typedef enum {
+    DIFFUSION_ROWS_NONE,
+    DIFFUSION_ROWS_OFF_WALLS,
+    DIFFUSION_ROWS_AT_WALLS,
+    DIFFUSION_ROWS_ALL
+} diffusion_rows;
+
+static inline bool diffusion_rows_include(diffusion_rows rows, bool at_wall)
+{
+    return rows == DIFFUSION_ROWS_ALL ||
+           rows == (at_wall ? DIFFUSION_ROWS_AT_WALLS : DIFFUSION_ROWS_OFF_WALLS);
+}
+
 /* The shifting velocity du of Eq. (7) (`shift`) and the volume correction's dv (`correct`,
  * volume_correction.h, after its mismatch e), frozen over the RK stages (sec. 2.4), for the
  * fluid; computed after EdBC has corrected the densities, since the volumes weigh them. Both
  * sum over the same neighbours, so one pass computes each row's geometry once for the two,
- * and for the `diffusion` of the rows that reach no wall image (fields_frozen_terms does the
- * others). */
+ * and for the `diffusion` of the `rows` (fields_frozen_terms does the others): the rows that
+ * reach a wall image only once the images hold their diffusion fields
+ * (tank_mirror_diffusion_fields). */
 void fields_shifting_and_correction(const physics_params *pp, particles *p,
                                     const neighbour_list *nl, bool shift, bool correct,
-                                    const step_diffusion *diffusion);
-
-/* The rows whose diffusion fields_frozen_terms computes: all, or, after
- * fields_shifting_and_correction has done the others, those that reach a wall image. */
-typedef enum { DIFFUSION_ROWS_ALL, DIFFUSION_ROWS_AT_WALLS } diffusion_rows;
+                                    const step_diffusion *diffusion, diffusion_rows rows);
 
 /* The other terms frozen over the RK stages, after the shifting velocity and bounce-back:
  * the ghosts' copies of the per-step fields, then the `diffusion` of the `rows` (0 where

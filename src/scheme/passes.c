@@ -95,14 +95,28 @@ static const step_diffusion *diffusion_of(const solver *s, step_diffusion *d)
     return d;
 }
 
+/* The rows whose diffusion the shifting pass sums: in a frame that does not rotate, all of
+ * them, the walls' images taking their diffusion fields first (their density gradient follows
+ * the body force, which depends on the velocity only through the Coriolis force); in a
+ * rotating one, those that reach no image, and the frozen terms the others after bounce-back.
+ * The same operations either way (tests/test_block_sums.c), one row geometry less a row at a
+ * wall. */
+static diffusion_rows diffused_beside_shifting(const tank_frame *frame)
+{
+    return frame->rotating ? DIFFUSION_ROWS_OFF_WALLS : DIFFUSION_ROWS_ALL;
+}
+
 static long shifting_and_correction(solver *s, const tank_frame *frame, const neighbour_list *rows)
 {
-    (void)frame;
     /* the walls' images read e here, after the driver has brought the halo's e up to date */
     if (corrects(s)) volume_correction_ghost_mismatch(&s->p);
     step_diffusion d;
-    fields_shifting_and_correction(&s->pp, &s->p, rows, s->pp.shifting, corrects(s),
-                                   diffusion_of(s, &d));
+    const step_diffusion *diffusion = diffusion_of(s, &d);
+    diffusion_rows beside = diffused_beside_shifting(frame);
+    if (diffusion && beside == DIFFUSION_ROWS_ALL)
+        tank_mirror_diffusion_fields(&s->p, frame, s->pp.c0);
+    fields_shifting_and_correction(&s->pp, &s->p, rows, s->pp.shifting, corrects(s), diffusion,
+                                   beside);
     return 0;
 }
 
@@ -136,8 +150,11 @@ static long bounce_back(solver *s, const tank_frame *frame, const neighbour_list
 static long frozen_terms(solver *s, const tank_frame *frame, const neighbour_list *rows)
 {
     step_diffusion d;
+    diffusion_rows rest = diffused_beside_shifting(frame) == DIFFUSION_ROWS_ALL
+                              ? DIFFUSION_ROWS_NONE
+                              : DIFFUSION_ROWS_AT_WALLS;
     fields_frozen_terms(&s->pp, &s->p, rows, frame, diffusion_of(s, &d),
-                        shifts_or_corrects(s) ? DIFFUSION_ROWS_AT_WALLS : DIFFUSION_ROWS_ALL);
+                        shifts_or_corrects(s) ? rest : DIFFUSION_ROWS_ALL);
     return 0;
 }
 
@@ -170,9 +187,9 @@ static const step_pass prepare_passes[] = {
      correction_mismatch},
     {"volume mismatch in S_F", F(x) | F(vol) | F(surface) | F(volume_mismatch), F(volume_mismatch),
      corrects, correction_band},
-    /* Eq. (7), the correction velocity and the diffusion of the rows away from the walls
-       (Eq. 5), over one geometry of each row */
-    {"shifting (Eq. 7), correction velocity, diffusion off the walls",
+    /* Eq. (7), the correction velocity and the diffusion (Eq. 5) of every row, or in a
+       rotating frame of the rows away from the walls, over one geometry of each row */
+    {"shifting (Eq. 7), correction velocity, diffusion",
      F(x) | F(u) | F(rho) | F(m) | F(vol) | F(grad_rho) | F(nu_delta) | F(lambda) | F(normal) |
          F(surface) | F(volume_mismatch),
      F(shift) | F(correction) | F(diff_rho) | F(diff_m), shifts_or_corrects,
