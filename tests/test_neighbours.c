@@ -42,6 +42,14 @@ static void assert_rows_equal(const neighbour_list *nl, const int32_t *rows, siz
 }
 
 /* Random particles in a unit tank, a third of them pressed against walls and corners. */
+/* Cells of side `size` over the unit box [0, 1]^DIM */
+static void unit_box_cells(cell_grid *g, double size)
+{
+    double lo[DIM], hi[DIM];
+    for (int d = 0; d < DIM; d++) lo[d] = 0.0, hi[d] = 1.0;
+    assert_int_equal(cells_setup(g, lo, hi, size, 0.0), 0);
+}
+
 static void scatter(particles *p, size_t n, unsigned seed)
 {
     srand(seed);
@@ -258,12 +266,7 @@ static void test_rows_beyond_window(void **state)
     }
     p.n_fluid = p.n_total = n;
     cell_grid grid = {0};
-    double lo[DIM], hi[DIM];
-    for (int d = 0; d < DIM; d++) {
-        lo[d] = 0.0;
-        hi[d] = 1.0;
-    }
-    assert_int_equal(cells_setup(&grid, lo, hi, radius, 0.0), 0);
+    unit_box_cells(&grid, radius);
     assert_int_equal(cells_bin(&grid, p.x, n), 0);
     neighbour_list nl = {0};
     for (int build = 0; build < 2; build++) {
@@ -292,11 +295,9 @@ static void test_bin_any_thread_count(void **state)
     particles p;
     assert_int_equal(particles_init(&p, n), 0);
     scatter(&p, n, 5);
-    double lo[DIM], hi[DIM];
-    for (int d = 0; d < DIM; d++) lo[d] = 0.0, hi[d] = 1.0;
     cell_grid one = {0}, grid = {0};
-    assert_int_equal(cells_setup(&one, lo, hi, 0.07, 0.0), 0);
-    assert_int_equal(cells_setup(&grid, lo, hi, 0.07, 0.0), 0);
+    unit_box_cells(&one, 0.07);
+    unit_box_cells(&grid, 0.07);
     omp_set_num_threads(1);
     assert_int_equal(cells_bin(&one, p.x, n), 0);
     for (size_t c = 0; c < one.n_cells; c++)
@@ -329,12 +330,7 @@ static void test_sort_by_cell(void **state)
         for (int d = 0; d < DIM; d++) p.u[d][i] = p.x[d][i];
     }
     cell_grid grid = {0};
-    double lo[DIM], hi[DIM];
-    for (int d = 0; d < DIM; d++) {
-        lo[d] = 0.0;
-        hi[d] = 1.0;
-    }
-    cells_setup(&grid, lo, hi, 0.1, 0.0);
+    unit_box_cells(&grid, 0.1);
     cells_bin(&grid, p.x, n);
     uint32_t *order = malloc(n * sizeof *order);
     double *scratch = malloc(n * sizeof *scratch);

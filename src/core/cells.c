@@ -69,6 +69,12 @@ static inline int cell_coord(const cell_grid *g, int d, double x)
     return c;
 }
 
+/* The coordinates of the cell that holds particle i */
+static inline void cell_coords_of(const cell_grid *g, double *const x[DIM], size_t i, int c[DIM])
+{
+    for (int d = 0; d < DIM; d++) c[d] = cell_coord(g, d, x[d][i]);
+}
+
 int cells_column(const cell_grid *g, double x) { return cell_coord(g, 0, x); }
 
 size_t cells_n_strips(const cell_grid *g) { return (size_t)((g->n[0] + g->strip - 1) / g->strip); }
@@ -126,7 +132,7 @@ int cells_bin(cell_grid *g, double *const x[DIM], size_t n)
         memset(mine, 0, g->n_cells * sizeof *mine);
         for (size_t i = first; i < end; i++) {
             int c[DIM];
-            for (int d = 0; d < DIM; d++) c[d] = cell_coord(g, d, x[d][i]);
+            cell_coords_of(g, x, i, c);
             g->cell_of[i] = (uint32_t)cell_index(g, c);
             mine[g->cell_of[i]]++;
         }
@@ -222,7 +228,7 @@ static void scan_neighbours(const cell_grid *g, double *const x[DIM], size_t i, 
                             scan_row *row, cells_scan_fn scan)
 {
     int c0[DIM], lo[DIM], hi[DIM];
-    for (int d = 0; d < DIM; d++) c0[d] = cell_coord(g, d, x[d][i]);
+    cell_coords_of(g, x, i, c0);
     cells_around(g, c0, lo, hi);
     vec xi = vec_load(x, i);
     int c[DIM];
