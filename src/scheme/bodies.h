@@ -19,6 +19,10 @@ typedef struct {
     int32_t *id;
     uint8_t *at_wall; /* per body: a wall's ghost is within 2h of its surface */
     size_t count;     /* bodies of the step */
+    /* the fluid's S_F particles of the step in index order: the per-body folds and loops go
+       through these and not the whole fluid (their order, and so their sums, the same) */
+    int32_t *members;
+    size_t n_members, members_capacity;
 } bodies;
 
 /* Adds this process's particles' shares, in index order, to sums[id * width + c] of each
@@ -58,9 +62,12 @@ int bodies_reserve(bodies *b, size_t n);
 void bodies_free(bodies *b);
 
 /* The bodies of the step's S_F (p->surface), joined across processes through d (NULL: one
- * process). Serial and in index order, so the numbering does not depend on the thread count. */
-void bodies_find(const kernel *k, const particles *p, const neighbour_list *nl,
-                 const bodies_domain *d, bodies *b);
+ * process), and their members. The sets are united in parallel, in any order: the connected
+ * pieces, and each one's least index (the root), are the same for any order; the numbering
+ * that follows is serial and in index order, so it does not depend on the thread count.
+ * Returns 0, or -1 when out of memory. */
+int bodies_find(const kernel *k, const particles *p, const neighbour_list *nl,
+                const bodies_domain *d, bodies *b);
 
 /* The root of particle i's set in the union-find of the last bodies_find (fluid or halo). */
 int32_t bodies_root(bodies *b, int32_t i);

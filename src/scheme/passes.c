@@ -79,8 +79,7 @@ static long find_bodies(solver *s, const tank_frame *frame, const neighbour_list
 {
     (void)frame;
     if (bodies_reserve(&s->bodies, particles_images_begin(&s->p))) return -1;
-    bodies_find(&s->pp.k, &s->p, rows, solver_bodies_domain(s), &s->bodies);
-    return 0;
+    return bodies_find(&s->pp.k, &s->p, rows, solver_bodies_domain(s), &s->bodies);
 }
 
 static bool corrects(const solver *s) { return s->pp.volume_correction; }

@@ -202,7 +202,8 @@ static void add_force_and_centre(void *context, double *sums)
 {
     const balance_folds *c = context;
     const particles *p = c->p;
-    for (size_t i = 0; i < p->n_fluid; i++) {
+    for (size_t k = 0; k < c->bs->n_members; k++) {
+        size_t i = (size_t)c->bs->members[k];
         if (p->interface[i] == 0.0) continue;
         double *b = sums + (size_t)c->bs->id[i] * BALANCE_FIRST;
         double wi = p->interface[i] * p->vol[i];
@@ -230,7 +231,8 @@ static void remove_force_add_moment(void *context, double *sums)
 {
     const balance_folds *c = context;
     particles *p = c->p;
-    for (size_t i = 0; i < p->n_fluid; i++) {
+    for (size_t k = 0; k < c->bs->n_members; k++) {
+        size_t i = (size_t)c->bs->members[k];
         if (p->interface[i] == 0.0) continue;
         int32_t id = c->bs->id[i];
         if (!is_balanced(c->bs, c->first, id)) continue;
@@ -253,15 +255,16 @@ static void remove_force_add_moment(void *context, double *sums)
  * body's centre whose moment it is (a rigid rotation's pattern, which adds no resultant). A
  * body whose interface comes within 2h of a wall keeps both: the wall takes the reaction of
  * its contact lines. The bodies are the step's (bodies_find); their sums are folds
- * in index order over the interface particles (bodies_sum): the result does not depend on
- * the thread count or, through d, the process count. */
+ * in index order over the interface particles, the bodies' members (bodies_sum): the result does
+ * not depend on the thread count or, through d, the process count. */
 static void balance_bodies(particles *p, const bodies *bs, const bodies_domain *d,
                            surface_tension_work *w)
 {
     balance_folds folds = {p, bs, w->first};
     bodies_sum(d, p, bs, w->first, BALANCE_FIRST, add_force_and_centre, &folds);
     bodies_sum(d, p, bs, w->second, BALANCE_SECOND, remove_force_add_moment, &folds);
-    for (size_t i = 0; i < p->n_fluid; i++) { /* the moment removed */
+    for (size_t k = 0; k < bs->n_members; k++) { /* the moment removed */
+        size_t i = (size_t)bs->members[k];
         if (p->interface[i] == 0.0) continue;
         int32_t id = bs->id[i];
         if (!is_balanced(bs, w->first, id)) continue;

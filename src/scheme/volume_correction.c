@@ -77,8 +77,8 @@ void volume_correction_free(volume_correction_work *w)
  * is never smooth at the particle scale, so those moves never cancel: on a drop of water at
  * rest (docs/surface-tension.md) they fed currents that grew over seconds. Where lambda <
  * 0.4 there is no reliable normal and no correction (correction_velocity): such particles
- * take no part. The sums are serial and in index order (bodies_sum): they do not depend on
- * the thread count. */
+ * take no part. The sums are serial and in index order over the bodies' members (bodies_sum):
+ * they do not depend on the thread count. */
 static bool moves_with_its_body(const particles *p, const bodies *b, size_t i)
 {
     return b->id[i] >= 0 && p->lambda[i] >= SHIFTING_LAMBDA_MIN;
@@ -93,7 +93,8 @@ static void add_normal_flux(void *context, double *sums)
 {
     const body_shares *c = context;
     const particles *p = c->p;
-    for (size_t i = 0; i < p->n_fluid; i++) {
+    for (size_t k = 0; k < c->b->n_members; k++) {
+        size_t i = (size_t)c->b->members[k];
         if (!moves_with_its_body(p, c->b, i)) continue;
         vec dv = vec_load(p->correction, i), n = vec_load(p->normal, i);
         double *sum = sums + 2 * (size_t)c->b->id[i];
@@ -109,7 +110,8 @@ int volume_correction_per_body(particles *p, const bodies *b, const bodies_domai
     body_shares shares = {p, b};
     bodies_sum(d, p, b, w->sums, 2, add_normal_flux, &shares);
 #pragma omp parallel for schedule(static)
-    for (size_t i = 0; i < p->n_fluid; i++) {
+    for (size_t k = 0; k < b->n_members; k++) {
+        size_t i = (size_t)b->members[k];
         if (!moves_with_its_body(p, b, i)) continue;
         vec dv = vec_load(p->correction, i), n = vec_load(p->normal, i);
         const double *sum = w->sums + 2 * (size_t)b->id[i];
