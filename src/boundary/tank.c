@@ -2,7 +2,9 @@
 #include "boundary/tank.h"
 #include "physics/eos.h"
 
+#include <stdbool.h>
 #include <stdint.h>
+#include <stdlib.h>
 
 /* The reflection across a plane: a = I - 2 n n^T, b = 2 distance n (exact for the box's
  * axis-aligned planes: a = diag(+-1), b = 0 or 2 size_d). */
@@ -64,51 +66,92 @@ tank tank_box(const double size[DIM], wall_kind wall)
     return t;
 }
 
+/* Per axis, the walls particle i is within `reach` of, as bits of the ghost-map table: none,
+ * low, high (a thin tank: both). Returns its images: every combination of one option per axis
+ * but "none" everywhere, a wall, an edge (two walls) or a corner (three walls). */
+static int wall_options(const tank *t, const particles *p, size_t i, double reach,
+                        unsigned options[DIM][3], int n_options[DIM])
+{
+    int combinations = 1;
+    for (int d = 0; d < DIM; d++) {
+        n_options[d] = 0;
+        options[d][n_options[d]++] = 0;
+        if (p->x[d][i] < reach) options[d][n_options[d]++] = 1u << (2 * d);
+        if (p->x[d][i] > t->size[d] - reach) options[d][n_options[d]++] = 2u << (2 * d);
+        combinations *= n_options[d];
+    }
+    return combinations - 1;
+}
+
+/* Particle i's images (wall_options) into the slots from g on; returns the next free slot. */
+static size_t add_images(particles *p, size_t i, size_t g, unsigned options[DIM][3],
+                         const int n_options[DIM])
+{
+    int combo[DIM] = {0};
+    for (;;) {
+        unsigned walls = 0;
+        for (int d = 0; d < DIM; d++) walls |= options[d][combo[d]];
+        if (walls) {
+            p->ghost_kind[g - p->n_fluid] = GHOST_WALL_IMAGE;
+            p->ghost_source[g - p->n_fluid] = (int32_t)i;
+            p->ghost_map[g - p->n_fluid] = (uint8_t)walls;
+            g++;
+        }
+        int d = 0;
+        while (d < DIM && ++combo[d] == n_options[d]) combo[d++] = 0;
+        if (d == DIM) return g;
+    }
+}
+
+/* The sources a chunk of tank_make_ghosts: a few dozen chunks a thread at 1e5 particles */
+#define GHOST_CHUNK 1024
+
 int tank_make_ghosts(const tank *t, particles *p, double reach)
 {
     p->ghost_maps = t->maps;
-    size_t n_fluid = p->n_fluid, n_sources = particles_images_begin(p), g = n_sources;
-    /* serial and in the sources' order (the fluid, then an MPI run's halo): the ghost list is
-       the same for any thread count, and a cell's images come in the order of one process */
-    for (size_t i = 0; i < n_sources; i++) {
-        /* per axis, the walls this particle is near: none, low, high (a thin tank: both) */
-        unsigned options[DIM][3];
-        int n_options[DIM];
-        int near_any = 0;
-        for (int d = 0; d < DIM; d++) {
-            n_options[d] = 0;
-            options[d][n_options[d]++] = 0;
-            if (p->x[d][i] < reach) options[d][n_options[d]++] = 1u << (2 * d);
-            if (p->x[d][i] > t->size[d] - reach) options[d][n_options[d]++] = 2u << (2 * d);
-            near_any |= n_options[d] > 1;
+    size_t n_fluid = p->n_fluid, n_sources = particles_images_begin(p);
+    size_t chunks = (n_sources + GHOST_CHUNK - 1) / GHOST_CHUNK;
+    /* in the sources' order (the fluid, then an MPI run's halo), whatever the thread count,
+       so that a cell's images come in the order of one process: each chunk's images counted,
+       then written from the slot that the counts of the chunks before it give */
+    size_t *first = malloc((chunks + 1) * sizeof *first);
+    if (!first) return -1;
+    first[0] = n_sources;
+#pragma omp parallel for schedule(static)
+    for (size_t c = 0; c < chunks; c++) {
+        size_t images = 0,
+               end = (c + 1) * GHOST_CHUNK < n_sources ? (c + 1) * GHOST_CHUNK : n_sources;
+        for (size_t i = c * GHOST_CHUNK; i < end; i++) {
+            unsigned options[DIM][3];
+            int n_options[DIM];
+            images += (size_t)wall_options(t, p, i, reach, options, n_options);
         }
-        if (!near_any) continue;
-        /* every combination of one option per axis but "none" everywhere: a wall, an edge
-           (two walls) or a corner (three walls) */
-        int combo[DIM] = {0};
-        for (;;) {
-            unsigned walls = 0;
-            for (int d = 0; d < DIM; d++) walls |= options[d][combo[d]];
-            if (walls) {
-                /* the neighbour lists index fluid and ghosts with int32 (derived.c bounds the
-                   fluid alone) */
-                if (g == (size_t)INT32_MAX) return -1;
-                if (g + 1 > p->capacity && particles_reserve_images(p, g + 1)) return -1;
-                if (g + 1 - n_fluid > p->ghosts_capacity &&
-                    particles_reserve_ghosts(p, g + 1 - n_fluid))
-                    return -1;
-                p->ghost_kind[g - n_fluid] = GHOST_WALL_IMAGE;
-                p->ghost_source[g - n_fluid] = (int32_t)i;
-                p->ghost_map[g - n_fluid] = (uint8_t)walls;
-                g++;
-            }
-            int d = 0;
-            while (d < DIM && ++combo[d] == n_options[d]) combo[d++] = 0;
-            if (d == DIM) break;
-        }
+        first[c + 1] = images;
     }
-    p->n_total = g;
-    return 0;
+    for (size_t c = 0; c < chunks; c++) first[c + 1] += first[c];
+    size_t n_total = first[chunks];
+    /* the neighbour lists index fluid and ghosts with int32 (derived.c bounds the fluid
+       alone) */
+    bool room = n_total <= (size_t)INT32_MAX &&
+                (n_total <= p->capacity || !particles_reserve_images(p, n_total)) &&
+                (n_total - n_fluid <= p->ghosts_capacity ||
+                 !particles_reserve_ghosts(p, n_total - n_fluid));
+    if (room) {
+#pragma omp parallel for schedule(static)
+        for (size_t c = 0; c < chunks; c++) {
+            size_t g = first[c],
+                   end = (c + 1) * GHOST_CHUNK < n_sources ? (c + 1) * GHOST_CHUNK : n_sources;
+            for (size_t i = c * GHOST_CHUNK; i < end; i++) {
+                unsigned options[DIM][3];
+                int n_options[DIM];
+                if (wall_options(t, p, i, reach, options, n_options))
+                    g = add_images(p, i, g, options, n_options);
+            }
+        }
+        p->n_total = n_total;
+    }
+    free(first);
+    return room ? 0 : -1;
 }
 
 void tank_refresh_ghosts(const tank *t, particles *p, const tank_frame *frame, double rho0,
