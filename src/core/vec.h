@@ -4,6 +4,7 @@
 
 #include "core/dim.h"
 #include <math.h>
+#include <stdbool.h>
 #include <stddef.h>
 
 typedef struct {
@@ -154,6 +155,27 @@ static inline double mat_min_eigenvalue(const mat *m)
     double phi = r <= -1.0 ? M_PI / 3.0 : (r >= 1.0 ? 0.0 : acos(r) / 3.0);
     /* eigenvalues q + 2p cos(phi + 2 pi k / 3); the smallest is k = 1 */
     return q + 2.0 * p * cos(phi + 2.0 * M_PI / 3.0);
+#endif
+}
+
+/* Whether every eigenvalue of a symmetric matrix exceeds `floor`, that is whether m - floor I
+ * is positive definite: by Sylvester's criterion, all its leading principal minors are
+ * positive. The answer of mat_min_eigenvalue(m) > floor (the two may differ by round-off only
+ * where the smallest eigenvalue is the floor itself) without the cubic's arc cosine and
+ * cosine, for a pass that needs the answer and not the eigenvalue. */
+static inline bool mat_eigenvalues_above(const mat *m, double floor)
+{
+    const double(*a)[DIM] = m->a;
+    double a00 = a[0][0] - floor, a11 = a[1][1] - floor;
+    double minor2 = a00 * a11 - a[0][1] * a[0][1];
+#if DIM == 2
+    return a00 > 0.0 && minor2 > 0.0;
+#else
+    double a22 = a[2][2] - floor;
+    double minor3 = a00 * (a11 * a22 - a[1][2] * a[1][2]) -
+                    a[0][1] * (a[0][1] * a22 - a[1][2] * a[0][2]) +
+                    a[0][2] * (a[0][1] * a[1][2] - a11 * a[0][2]);
+    return a00 > 0.0 && minor2 > 0.0 && minor3 > 0.0;
 #endif
 }
 

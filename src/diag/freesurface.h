@@ -19,12 +19,13 @@ enum { SURFACE_INTERIOR = 0, SURFACE_REGION = 1, SURFACE_FREE = 2 };
 #define FREESURFACE_SCAN_OVER_DR 1.33
 
 /* The matrix that renormalises a particle's gradients: L^-1 where L is well conditioned
- * (lambda above lambda_min), else the identity, the plain gradient of drops and jets
- * (theory §2). */
-static inline mat renormalization(const mat *l, double lambda, double lambda_min)
+ * (its smallest eigenvalue lambda above lambda_min: mat_min_eigenvalue(l) > lambda_min, or
+ * mat_eigenvalues_above(l, lambda_min) where lambda itself is not wanted), else the
+ * identity, the plain gradient of drops and jets (theory §2). */
+static inline mat renormalization(const mat *l, bool well_conditioned)
 {
     mat l_inv = mat_identity();
-    if (lambda > lambda_min) mat_inverse(l, &l_inv);
+    if (well_conditioned) mat_inverse(l, &l_inv);
     return l_inv;
 }
 

@@ -107,7 +107,7 @@ void fields_geometry(const physics_params *pp, const tank *t, particles *p,
         p->kernel_sum[i] = s.w + k->norm; /* self term W(0) */
         p->gamma[i] = s.wv + k->norm * p->vol[i];
         /* near-singular L (drops, jets): fall back to the plain gradient (theory §2) */
-        mat l_inv = renormalization(&s.l, lambda, pp->lambda_renormalize);
+        mat l_inv = renormalization(&s.l, lambda > pp->lambda_renormalize);
         vec_store(p->normal, i, outward_normal(&l_inv, s.grad_one, &p->normal_raw[i]));
         vec_store(p->grad_rho, i, mat_mul_vec(&l_inv, s.drho));
         double g[DIM][DIM];

@@ -88,7 +88,7 @@ static void interface_and_normals(const surface_tension_params *st, const kernel
                 if (p->surface[pr.j] != SURFACE_INTERIOR) band += pr.w * p->vol[pr.j];
             }
             delta = 2.0 * vec_norm(grad_one) / st->flat_integral;
-            mat l_inv = renormalization(&l, mat_min_eigenvalue(&l), st->lambda_min);
+            mat l_inv = renormalization(&l, mat_eigenvalues_above(&l, st->lambda_min));
             double length;
             n = outward_normal(&l_inv, grad_one, &length);
         }
