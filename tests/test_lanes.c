@@ -1,9 +1,9 @@
 /* The passes' lane forms (core/lanes.h), 4 and 8 wide, give the scalar forms' bits, on a
  * disordered block of liquid in a tank (wall ghosts, random velocities, shifting): the
  * right-hand side's rates in every variant of its loop (LES on and off, shifting on and off,
- * constant and variable masses), and every field of a few whole steps with surface tension. A particle count that is
- * not a multiple of four or eight takes the scalar tail too. A width the processor does not have
- * (AVX2 for 4, AVX-512 for 8) is skipped: only narrower forms run there. */
+ * constant and variable masses), and every field of a few whole steps with surface tension. A
+ * particle count that is not a multiple of four or eight takes the scalar tail too. A width the
+ * processor does not have (AVX2 for 4, AVX-512 for 8) is skipped: only narrower forms run there. */
 #include "core/lanes_switch.h"
 #include "scheme/rhs.h"
 #include "scheme/solver.h"

@@ -106,6 +106,12 @@ static size_t add_images(particles *p, size_t i, size_t g, unsigned options[DIM]
 /* The sources a chunk of tank_make_ghosts: a few dozen chunks a thread at 1e5 particles */
 #define GHOST_CHUNK 1024
 
+/* The end of chunk c of n sources */
+static inline size_t chunk_end(size_t c, size_t n)
+{
+    return (c + 1) * GHOST_CHUNK < n ? (c + 1) * GHOST_CHUNK : n;
+}
+
 int tank_make_ghosts(const tank *t, particles *p, double reach)
 {
     p->ghost_maps = t->maps;
@@ -119,9 +125,8 @@ int tank_make_ghosts(const tank *t, particles *p, double reach)
     first[0] = n_sources;
 #pragma omp parallel for schedule(static)
     for (size_t c = 0; c < chunks; c++) {
-        size_t images = 0,
-               end = (c + 1) * GHOST_CHUNK < n_sources ? (c + 1) * GHOST_CHUNK : n_sources;
-        for (size_t i = c * GHOST_CHUNK; i < end; i++) {
+        size_t images = 0;
+        for (size_t i = c * GHOST_CHUNK; i < chunk_end(c, n_sources); i++) {
             unsigned options[DIM][3];
             int n_options[DIM];
             images += (size_t)wall_options(t, p, i, reach, options, n_options);
@@ -139,9 +144,8 @@ int tank_make_ghosts(const tank *t, particles *p, double reach)
     if (room) {
 #pragma omp parallel for schedule(static)
         for (size_t c = 0; c < chunks; c++) {
-            size_t g = first[c],
-                   end = (c + 1) * GHOST_CHUNK < n_sources ? (c + 1) * GHOST_CHUNK : n_sources;
-            for (size_t i = c * GHOST_CHUNK; i < end; i++) {
+            size_t g = first[c];
+            for (size_t i = c * GHOST_CHUNK; i < chunk_end(c, n_sources); i++) {
                 unsigned options[DIM][3];
                 int n_options[DIM];
                 if (wall_options(t, p, i, reach, options, n_options))

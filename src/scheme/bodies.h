@@ -8,6 +8,7 @@
 #include "core/cells.h"
 #include "core/kernel.h"
 #include "core/particles.h"
+#include <stdbool.h>
 #include <stdint.h>
 
 typedef struct {
@@ -24,6 +25,11 @@ typedef struct {
     int32_t *members;
     size_t n_members, members_capacity;
 } bodies;
+
+/* i over the step's S_F particles of this process's fluid (b->members), in index order */
+#define FOR_EACH_MEMBER(b, i)                                                                      \
+    for (size_t i##_k = 0, i = 0;                                                                  \
+         i##_k < (b)->n_members && (i = (size_t)(b)->members[i##_k], true); i##_k++)
 
 /* Adds this process's particles' shares, in index order, to sums[id * width + c] of each
  * body. */

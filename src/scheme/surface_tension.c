@@ -202,8 +202,7 @@ static void add_force_and_centre(void *context, double *sums)
 {
     const balance_folds *c = context;
     const particles *p = c->p;
-    for (size_t k = 0; k < c->bs->n_members; k++) {
-        size_t i = (size_t)c->bs->members[k];
+    FOR_EACH_MEMBER (c->bs, i) {
         if (p->interface[i] == 0.0) continue;
         double *b = sums + (size_t)c->bs->id[i] * BALANCE_FIRST;
         double wi = p->interface[i] * p->vol[i];
@@ -231,8 +230,7 @@ static void remove_force_add_moment(void *context, double *sums)
 {
     const balance_folds *c = context;
     particles *p = c->p;
-    for (size_t k = 0; k < c->bs->n_members; k++) {
-        size_t i = (size_t)c->bs->members[k];
+    FOR_EACH_MEMBER (c->bs, i) {
         if (p->interface[i] == 0.0) continue;
         int32_t id = c->bs->id[i];
         if (!is_balanced(c->bs, c->first, id)) continue;
@@ -263,8 +261,7 @@ static void balance_bodies(particles *p, const bodies *bs, const bodies_domain *
     balance_folds folds = {p, bs, w->first};
     bodies_sum(d, p, bs, w->first, BALANCE_FIRST, add_force_and_centre, &folds);
     bodies_sum(d, p, bs, w->second, BALANCE_SECOND, remove_force_add_moment, &folds);
-    for (size_t k = 0; k < bs->n_members; k++) { /* the moment removed */
-        size_t i = (size_t)bs->members[k];
+    FOR_EACH_MEMBER (bs, i) { /* the moment removed */
         if (p->interface[i] == 0.0) continue;
         int32_t id = bs->id[i];
         if (!is_balanced(bs, w->first, id)) continue;

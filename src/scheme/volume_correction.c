@@ -93,8 +93,7 @@ static void add_normal_flux(void *context, double *sums)
 {
     const body_shares *c = context;
     const particles *p = c->p;
-    for (size_t k = 0; k < c->b->n_members; k++) {
-        size_t i = (size_t)c->b->members[k];
+    FOR_EACH_MEMBER (c->b, i) {
         if (!moves_with_its_body(p, c->b, i)) continue;
         vec dv = vec_load(p->correction, i), n = vec_load(p->normal, i);
         double *sum = sums + 2 * (size_t)c->b->id[i];
