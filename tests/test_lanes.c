@@ -35,11 +35,15 @@ static void rate_arrays_alloc(rate_arrays *a, size_t n)
     PARTICLE_RATED(RATE_ARRAY_SCALAR, RATE_ARRAY_VECTOR)
 }
 
-/* The block of ALE_BLOCK_CASE, disordered (disordered_block.h): a particle count that is not a
- * multiple of four, so that the scalar tail runs too. */
-static void lanes_block(config *cfg, solver *s)
+/* ALE_BLOCK_CASE with water's surface tension: its passes' row sums too */
+#define ALE_TENSION_CASE ALE_BLOCK_CASE "[fluid]\nsurface_tension = 0.0727\n"
+
+/* The block of case_text (ALE_BLOCK_CASE or ALE_TENSION_CASE), disordered
+ * (disordered_block.h): a particle count that is not a multiple of four, so that the scalar
+ * tail runs too. */
+static void lanes_block(const char *case_text, config *cfg, solver *s)
 {
-    disordered_block(ALE_BLOCK_CASE, 0.2, 7, cfg, s);
+    disordered_block(case_text, 0.2, 7, cfg, s);
     assert_true(s->p.n_fluid % 4 != 0);
 }
 
@@ -63,7 +67,7 @@ static void rhs_lanes_give_the_scalar_bits(int width)
     if (!lanes_of_width(width)) skip();
     config cfg;
     solver s;
-    lanes_block(&cfg, &s);
+    lanes_block(ALE_BLOCK_CASE, &cfg, &s);
     particles *p = &s.p;
     tank_frame frame = solver_frame(&s, 0.0);
     size_t n = p->n_fluid, n_values = n * PARTICLE_N_RATED;
@@ -104,19 +108,16 @@ static void rhs_lanes_give_the_scalar_bits(int width)
     SCALAR(interface) SCALAR(curvature) VECTOR(st_force)
 // clang-format on
 
-/* ALE_BLOCK_CASE with water's surface tension: its passes' row sums too */
-#define ALE_TENSION_CASE ALE_BLOCK_CASE "[fluid]\nsurface_tension = 0.0727\n"
-
 static void steps_with_lanes_give_the_scalar_bits(int width)
 {
     if (!lanes_of_width(width)) skip();
     config cfg;
     solver scalar, lanes;
     lanes_limit(0);
-    disordered_block(ALE_TENSION_CASE, 0.2, 7, &cfg, &scalar);
+    lanes_block(ALE_TENSION_CASE, &cfg, &scalar);
     for (int step = 0; step < 5; step++) assert_int_equal(solver_step(&scalar, cfg.t_end), 0);
     lanes_limit(width);
-    disordered_block(ALE_TENSION_CASE, 0.2, 7, &cfg, &lanes);
+    lanes_block(ALE_TENSION_CASE, &cfg, &lanes);
     for (int step = 0; step < 5; step++) assert_int_equal(solver_step(&lanes, cfg.t_end), 0);
     size_t n = scalar.p.n_fluid;
     assert_int_equal(lanes.p.n_fluid, n);

@@ -65,12 +65,12 @@ static void random_eigenvalues(uint64_t *seed, int kind, double lambda[DIM], dou
     if (kind == 2) lambda[1] = lambda[0] * (1.0 + 1e-12);
     if (kind == 3)
         for (int d = 1; d < DIM; d++) lambda[d] = lambda[0];
-    *smallest = *largest = lambda[0];
-    for (int d = 1; d < DIM; d++) {
+    *smallest = INFINITY;
+    *largest = 0.0;
+    for (int d = 0; d < DIM; d++) {
         *smallest = fmin(*smallest, lambda[d]);
         *largest = fmax(*largest, fabs(lambda[d]));
     }
-    *largest = fmax(*largest, fabs(lambda[0]));
 }
 
 static void smallest_eigenvalue_is_known_one(void **state)
