@@ -7,6 +7,7 @@
 #include "physics/moment.h"
 #include "physics/surface_tension.h"
 #include "core/pair.h"
+#include "core/pair_block.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -62,35 +63,76 @@ void surface_tension_free(surface_tension_work *w)
     memset(w, 0, sizeof *w);
 }
 
+/* The sums of particle i over its row for the interface function and the normal: L (Eq. 10),
+ * sum grad W V and the band's share sum W V over the neighbours in S_F (self terms added
+ * after). */
+typedef struct {
+    mat l;
+    vec grad_one;
+    double band;
+} interface_sums;
+
+/* interface_sums lane by lane (core/pair_block.h): lane l sums the row's entries
+ * n = l mod PAIR_BLOCK. L is symmetric: its upper triangle is summed and mirrored. */
+typedef struct {
+    pair_block l[DIM][DIM], grad_one[DIM], band;
+} interface_block_sums;
+
+PAIR_BLOCK_INLINE interface_sums interface_row_sums(const kernel *k, const particles *p,
+                                                    const neighbour_list *nl, size_t i)
+{
+    vec xi = vec_load(p->x, i);
+    PAIR_ROW(k, p->x, nl, i, xi, row);
+    interface_block_sums bs;
+    __builtin_memset(&bs, 0, sizeof bs);
+    pair_block_geometry b;
+    FOR_EACH_PAIR_BLOCK_OF_ROW (&row, b) {
+        pair_block vol_j = pair_block_gather(p->vol, b.j), in_band;
+        for (int l = 0; l < PAIR_BLOCK; l++)
+            in_band[l] = p->surface[b.j[l]] != SURFACE_INTERIOR ? 1.0 : 0.0;
+        pair_block fv = b.f * vol_j;
+        for (int a = 0; a < DIM; a++) {
+            pair_block fr = fv * b.r_ji[a];
+            for (int c = a; c < DIM; c++) bs.l[a][c] += fr * b.r_ji[c];
+            bs.grad_one[a] += fr;
+        }
+        bs.band += b.w * vol_j * in_band; /* W = 0 beyond 2h: an exact zero there */
+    }
+    interface_sums s;
+    for (int a = 0; a < DIM; a++) {
+        for (int c = a; c < DIM; c++) s.l.a[a][c] = s.l.a[c][a] = block_total(bs.l[a][c]);
+        s.grad_one.c[a] = block_total(bs.grad_one[a]);
+    }
+    s.band = block_total(bs.band);
+    return s;
+}
+
+PAIR_BLOCK_FORMS(interface_sums, interface_row_sums,
+                 (const kernel *k, const particles *p, const neighbour_list *nl, size_t i),
+                 (k, p, nl, i))
+
 /* In S_F, from the current positions: delta_Sigma = 2 |sum grad W V| / flat_integral
  * (theory §4: the factor 2 because the gas half of the kernel is missing; the calibration
  * makes its integral across a flat lattice surface exactly 1) and the normal
  * -L^-1 sum grad W V, as fields_geometry computes it at the start of the step. Both are
  * taken again at every stage: a force that stays where the surface was while the particles
  * move pumps energy into the surface's short waves (docs/surface-tension.md). 0 in the
- * interior. */
+ * interior. The row's sums in blocks, as the geometry pass's (scheme/fields.c). */
 static void interface_and_normals(const surface_tension_params *st, const kernel *k, particles *p,
                                   const neighbour_list *nl, surface_tension_work *w,
                                   double *const normal[DIM])
 {
+    __auto_type sums_of = interface_row_sums_form();
     TEAM_FOR (i, p->n_fluid) {
         double delta = 0.0, band = 0.0;
         vec n = vec_zero();
         if (p->surface[i] != SURFACE_INTERIOR) {
-            vec xi = vec_load(p->x, i), grad_one = vec_zero();
-            mat l = mat_zero();
-            band = k->norm * p->vol[i];
-            pair pr;
-            FOR_EACH_PAIR (k, p->x, nl, i, xi, pr) {
-                double fv = pr.f * p->vol[pr.j];
-                grad_one = vec_axpy(grad_one, fv, pr.r_ji);
-                mat_add_outer(&l, fv, pr.r_ji, pr.r_ji);
-                if (p->surface[pr.j] != SURFACE_INTERIOR) band += pr.w * p->vol[pr.j];
-            }
-            delta = 2.0 * vec_norm(grad_one) / st->flat_integral;
-            mat l_inv = renormalization(&l, mat_eigenvalues_above(&l, st->lambda_min));
+            interface_sums s = sums_of(k, p, nl, i);
+            band = k->norm * p->vol[i] + s.band;
+            delta = 2.0 * vec_norm(s.grad_one) / st->flat_integral;
+            mat l_inv = renormalization(&s.l, mat_eigenvalues_above(&s.l, st->lambda_min));
             double length;
-            n = outward_normal(&l_inv, grad_one, &length);
+            n = outward_normal(&l_inv, s.grad_one, &length);
         }
         p->interface[i] = delta;
         w->band_sum[i] = band;
