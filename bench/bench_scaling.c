@@ -6,9 +6,11 @@
  * stepped twice to warm up, then timed in ROUNDS rounds of about 2e5 particle-steps each, the
  * sizes taking turns within a round. Prints microseconds per particle-step (the median round
  * and the range of the rounds), the heap per particle each size holds, each size's cost
- * against the smallest size's in the same round (the median over the rounds, and their range)
- * and its neighbours within 2h a particle: a flat curve means the cache and
- * the neighbour search scale (issue 22 asks for 20 %). A benchmark: it never fails on timing.
+ * against the smallest size's in the same round (the median over the rounds, and their range),
+ * its neighbours within 2h a particle, and the walls' images per fluid particle (each a slot
+ * of the store that the heap per particle and the step's ghost passes count; the narrow 3D
+ * tank has 1.5 at 7,560 particles, 0.26 at 945,000): a flat curve means the cache and the
+ * neighbour search scale (issue 22 asks for 20 %). A benchmark: it never fails on timing.
  * Usage: bench_scaling_2d [MAX] */
 #include "app/progress.h"
 #include "bench_memory.h"
@@ -84,7 +86,8 @@ typedef struct {
     config cfg;
     solver s;
     double n, bytes, neighbours;
-    int steps; /* a round's */
+    double images; /* the walls' images per fluid particle: each holds the fields of a slot */
+    int steps;     /* a round's */
     double us[ROUNDS];
     double ratio[ROUNDS]; /* us against the smallest size's in the same round */
 } size_run;
@@ -116,6 +119,7 @@ static int set_up_size(size_run *r, double target)
     r->bytes = (heap_in_use() - heap0) / r->n;
     r->steps = (int)ceil(ROUND_PARTICLE_STEPS / r->n);
     r->neighbours = mean_near(&r->s);
+    r->images = (double)(r->s.p.n_total - particles_images_begin(&r->s.p)) / r->n;
     return 0;
 }
 
@@ -142,8 +146,8 @@ int main(int argc, char **argv)
     for (int round = 0; round < ROUNDS; round++)
         for (int k = 0; k < sizes; k++)
             if ((runs[k].us[round] = time_round(&runs[k])) < 0.0) return 1;
-    printf("%10s %8s %16s %8s %10s %14s %10s\n", "particles", "us/PS", "rounds' range", "bytes",
-           "cost/first", "rounds' range", "neighbours");
+    printf("%10s %8s %16s %8s %10s %14s %10s %7s\n", "particles", "us/PS", "rounds' range", "bytes",
+           "cost/first", "rounds' range", "neighbours", "images");
     /* each size against the smallest in the same round, where both ran within a minute */
     for (int k = 0; k < sizes; k++)
         for (int round = 0; round < ROUNDS; round++)
@@ -152,9 +156,9 @@ int main(int argc, char **argv)
         size_run *r = &runs[k];
         qsort(r->ratio, ROUNDS, sizeof *r->ratio, by_value);
         qsort(r->us, ROUNDS, sizeof *r->us, by_value);
-        printf("%10.0f %8.3f %7.3f - %6.3f %8.0f %10.2f %6.2f - %5.2f %10.1f\n", r->n,
+        printf("%10.0f %8.3f %7.3f - %6.3f %8.0f %10.2f %6.2f - %5.2f %10.1f %7.2f\n", r->n,
                r->us[ROUNDS / 2], r->us[0], r->us[ROUNDS - 1], r->bytes, r->ratio[ROUNDS / 2],
-               r->ratio[0], r->ratio[ROUNDS - 1], r->neighbours);
+               r->ratio[0], r->ratio[ROUNDS - 1], r->neighbours, r->images);
     }
     for (int k = 0; k < sizes; k++) solver_free(&runs[k].s);
     free(runs);
