@@ -93,6 +93,33 @@ PAIR_BLOCK_INLINE double block_total(pair_block s)
     return total;
 }
 
+/* The block sums of L = sum r_ji (x) r_ji F V_j (Eq. 10; its upper triangle, L being
+ * symmetric) and of sum r_ji F V_j = sum grad_i W_ij V_j over a row: the geometry pass's
+ * (scheme/fields.c) and surface tension's interface (scheme/surface_tension.c). */
+typedef struct {
+    pair_block l[DIM][DIM], grad_one[DIM];
+} pair_block_moments;
+
+/* A block's terms; fv = F V_j, zero where the entry does not count */
+PAIR_BLOCK_INLINE void pair_block_moments_add(pair_block_moments *m, pair_block fv,
+                                              const pair_block r_ji[DIM])
+{
+    for (int a = 0; a < DIM; a++) {
+        pair_block fr = fv * r_ji[a];
+        for (int c = a; c < DIM; c++) m->l[a][c] += fr * r_ji[c];
+        m->grad_one[a] += fr;
+    }
+}
+
+/* The row's L (the upper triangle mirrored) and sum grad W V, from the lanes' sums */
+PAIR_BLOCK_INLINE void pair_block_moments_total(const pair_block_moments *m, mat *l, vec *grad_one)
+{
+    for (int a = 0; a < DIM; a++) {
+        for (int c = a; c < DIM; c++) l->a[a][c] = l->a[c][a] = block_total(m->l[a][c]);
+        grad_one->c[a] = block_total(m->grad_one[a]);
+    }
+}
+
 /* The viscous term's velocity of the block's neighbours, component by component: their own
  * velocity, or, where the row reaches a ghost, particle_viscous_velocity's (a wall image's
  * u_wall). */

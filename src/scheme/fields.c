@@ -20,9 +20,10 @@ typedef struct {
 } neighbour_sums;
 
 /* neighbour_sums lane by lane (core/pair_block.h): lane l sums the row's entries n = l mod
- * PAIR_BLOCK. L is symmetric: its upper triangle is summed and mirrored. */
+ * PAIR_BLOCK. */
 typedef struct {
-    pair_block l[DIM][DIM], grad_one[DIM], w, wv, drho[DIM], du[DIM][DIM];
+    pair_block_moments moments; /* L and sum grad W V */
+    pair_block w, wv, drho[DIM], du[DIM][DIM];
 } neighbour_block_sums;
 
 /* A block of pairs' terms of Eqs. (10), (11) and (A.2); each has a factor F or W, zero where
@@ -32,10 +33,9 @@ PAIR_BLOCK_INLINE void neighbour_block_sums_add(neighbour_block_sums *s,
                                                 pair_block drho, const pair_block du[DIM])
 {
     pair_block fv = b->f * vol_j;
+    pair_block_moments_add(&s->moments, fv, b->r_ji);
     for (int a = 0; a < DIM; a++) {
         pair_block fr = fv * b->r_ji[a];
-        for (int c = a; c < DIM; c++) s->l[a][c] += fr * b->r_ji[c];
-        s->grad_one[a] += fr;
         s->drho[a] += drho * fr;
         for (int c = 0; c < DIM; c++) s->du[c][a] += du[c] * fr;
     }
@@ -46,9 +46,8 @@ PAIR_BLOCK_INLINE void neighbour_block_sums_add(neighbour_block_sums *s,
 PAIR_BLOCK_INLINE neighbour_sums neighbour_sums_total(const neighbour_block_sums *bs)
 {
     neighbour_sums s;
+    pair_block_moments_total(&bs->moments, &s.l, &s.grad_one);
     for (int a = 0; a < DIM; a++) {
-        for (int c = a; c < DIM; c++) s.l.a[a][c] = s.l.a[c][a] = block_total(bs->l[a][c]);
-        s.grad_one.c[a] = block_total(bs->grad_one[a]);
         s.drho.c[a] = block_total(bs->drho[a]);
         for (int c = 0; c < DIM; c++) s.du[a][c] = block_total(bs->du[a][c]);
     }

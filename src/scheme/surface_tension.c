@@ -72,38 +72,26 @@ typedef struct {
     double band;
 } interface_sums;
 
-/* interface_sums lane by lane (core/pair_block.h): lane l sums the row's entries
- * n = l mod PAIR_BLOCK. L is symmetric: its upper triangle is summed and mirrored. */
-typedef struct {
-    pair_block l[DIM][DIM], grad_one[DIM], band;
-} interface_block_sums;
-
 PAIR_BLOCK_INLINE interface_sums interface_row_sums(const kernel *k, const particles *p,
                                                     const neighbour_list *nl, size_t i)
 {
     vec xi = vec_load(p->x, i);
     PAIR_ROW(k, p->x, nl, i, xi, row);
-    interface_block_sums bs;
-    __builtin_memset(&bs, 0, sizeof bs);
+    /* lane by lane (core/pair_block.h): lane l sums the row's entries n = l mod PAIR_BLOCK */
+    pair_block_moments moments;
+    __builtin_memset(&moments, 0, sizeof moments);
+    pair_block band = {0};
     pair_block_geometry b;
     FOR_EACH_PAIR_BLOCK_OF_ROW (&row, b) {
         pair_block vol_j = pair_block_gather(p->vol, b.j), in_band;
         for (int l = 0; l < PAIR_BLOCK; l++)
             in_band[l] = p->surface[b.j[l]] != SURFACE_INTERIOR ? 1.0 : 0.0;
-        pair_block fv = b.f * vol_j;
-        for (int a = 0; a < DIM; a++) {
-            pair_block fr = fv * b.r_ji[a];
-            for (int c = a; c < DIM; c++) bs.l[a][c] += fr * b.r_ji[c];
-            bs.grad_one[a] += fr;
-        }
-        bs.band += b.w * vol_j * in_band; /* W = 0 beyond 2h: an exact zero there */
+        pair_block_moments_add(&moments, b.f * vol_j, b.r_ji);
+        band += b.w * vol_j * in_band; /* W = 0 beyond 2h: an exact zero there */
     }
     interface_sums s;
-    for (int a = 0; a < DIM; a++) {
-        for (int c = a; c < DIM; c++) s.l.a[a][c] = s.l.a[c][a] = block_total(bs.l[a][c]);
-        s.grad_one.c[a] = block_total(bs.grad_one[a]);
-    }
-    s.band = block_total(bs.band);
+    pair_block_moments_total(&moments, &s.l, &s.grad_one);
+    s.band = block_total(band);
     return s;
 }
 
