@@ -125,8 +125,8 @@ int tank_make_ghosts(const tank *t, particles *p, double reach)
     first[0] = n_sources;
 #pragma omp parallel for schedule(static)
     for (size_t c = 0; c < chunks; c++) {
-        size_t images = 0;
-        for (size_t i = c * GHOST_CHUNK; i < chunk_end(c, n_sources); i++) {
+        size_t images = 0, end = chunk_end(c, n_sources);
+        for (size_t i = c * GHOST_CHUNK; i < end; i++) {
             unsigned options[DIM][3];
             int n_options[DIM];
             images += (size_t)wall_options(t, p, i, reach, options, n_options);
@@ -144,8 +144,8 @@ int tank_make_ghosts(const tank *t, particles *p, double reach)
     if (room) {
 #pragma omp parallel for schedule(static)
         for (size_t c = 0; c < chunks; c++) {
-            size_t g = first[c];
-            for (size_t i = c * GHOST_CHUNK; i < chunk_end(c, n_sources); i++) {
+            size_t g = first[c], end = chunk_end(c, n_sources);
+            for (size_t i = c * GHOST_CHUNK; i < end; i++) {
                 unsigned options[DIM][3];
                 int n_options[DIM];
                 if (wall_options(t, p, i, reach, options, n_options))

@@ -98,13 +98,26 @@ static inline void mat_add_outer(mat *m, double s, vec v, vec w)
         for (int b = 0; b < DIM; b++) m->a[a][b] += s * v.c[a] * w.c[b];
 }
 
+/* det m, by cofactors along the first row */
+static inline double mat_determinant(const mat *m)
+{
+    const double(*a)[DIM] = m->a;
+#if DIM == 2
+    return a[0][0] * a[1][1] - a[0][1] * a[1][0];
+#else
+    return a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) +
+           a[0][1] * (a[1][2] * a[2][0] - a[1][0] * a[2][2]) +
+           a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
+#endif
+}
+
 /* Inverse of a symmetric matrix by cofactors; returns the determinant (0: singular, m_inv
  * untouched). */
 static inline double mat_inverse(const mat *m, mat *m_inv)
 {
-#if DIM == 2
-    double det = m->a[0][0] * m->a[1][1] - m->a[0][1] * m->a[1][0];
+    double det = mat_determinant(m);
     if (det == 0.0) return 0.0;
+#if DIM == 2
     m_inv->a[0][0] = m->a[1][1] / det;
     m_inv->a[1][1] = m->a[0][0] / det;
     m_inv->a[0][1] = -m->a[0][1] / det;
@@ -112,15 +125,10 @@ static inline double mat_inverse(const mat *m, mat *m_inv)
     return det;
 #else
     const double(*a)[3] = m->a;
-    double c00 = a[1][1] * a[2][2] - a[1][2] * a[2][1];
-    double c01 = a[1][2] * a[2][0] - a[1][0] * a[2][2];
-    double c02 = a[1][0] * a[2][1] - a[1][1] * a[2][0];
-    double det = a[0][0] * c00 + a[0][1] * c01 + a[0][2] * c02;
-    if (det == 0.0) return 0.0;
     double inv = 1.0 / det;
-    m_inv->a[0][0] = c00 * inv;
-    m_inv->a[1][0] = c01 * inv;
-    m_inv->a[2][0] = c02 * inv;
+    m_inv->a[0][0] = (a[1][1] * a[2][2] - a[1][2] * a[2][1]) * inv;
+    m_inv->a[1][0] = (a[1][2] * a[2][0] - a[1][0] * a[2][2]) * inv;
+    m_inv->a[2][0] = (a[1][0] * a[2][1] - a[1][1] * a[2][0]) * inv;
     m_inv->a[0][1] = (a[0][2] * a[2][1] - a[0][1] * a[2][2]) * inv;
     m_inv->a[1][1] = (a[0][0] * a[2][2] - a[0][2] * a[2][0]) * inv;
     m_inv->a[2][1] = (a[0][1] * a[2][0] - a[0][0] * a[2][1]) * inv;
@@ -165,18 +173,11 @@ static inline double mat_min_eigenvalue(const mat *m)
  * cosine, for a pass that needs the answer and not the eigenvalue. */
 static inline bool mat_eigenvalues_above(const mat *m, double floor)
 {
-    const double(*a)[DIM] = m->a;
-    double a00 = a[0][0] - floor, a11 = a[1][1] - floor;
-    double minor2 = a00 * a11 - a[0][1] * a[0][1];
-#if DIM == 2
-    return a00 > 0.0 && minor2 > 0.0;
-#else
-    double a22 = a[2][2] - floor;
-    double minor3 = a00 * (a11 * a22 - a[1][2] * a[1][2]) -
-                    a[0][1] * (a[0][1] * a22 - a[1][2] * a[0][2]) +
-                    a[0][2] * (a[0][1] * a[1][2] - a11 * a[0][2]);
-    return a00 > 0.0 && minor2 > 0.0 && minor3 > 0.0;
-#endif
+    mat shifted = *m; /* m - floor I */
+    for (int d = 0; d < DIM; d++) shifted.a[d][d] -= floor;
+    double(*a)[DIM] = shifted.a;
+    double minor2 = a[0][0] * a[1][1] - a[0][1] * a[1][0]; /* in 2D, the determinant */
+    return a[0][0] > 0.0 && minor2 > 0.0 && (DIM == 2 || mat_determinant(&shifted) > 0.0);
 }
 
 #endif
