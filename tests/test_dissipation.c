@@ -21,6 +21,7 @@
 #include "check.h"
 #include "table.h"
 #include "run_case.h"
+#include "slope.h"
 
 #include <math.h>
 
@@ -85,18 +86,14 @@ static void test_standing_wave_decay(void **state)
     const double *e = table_column(&d, "e_diss");
     /* least-squares slope of ln e_k over the free periods 4..8 (period 3 still carries the
        faster decay of the higher modes the forcing excited) */
-    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    double t[8], ln_e[8];
     int n = 0;
-    for (size_t j = 3; j < d.n_rows; j++) {
+    for (size_t j = 3; j < d.n_rows; j++, n++) {
         assert_true(e[j] > 0.0);
-        double x = (double)j * period, y = log(e[j]);
-        sx += x;
-        sy += y;
-        sxx += x * x;
-        sxy += x * y;
-        n++;
+        t[n] = (double)j * period;
+        ln_e[n] = log(e[j]);
     }
-    double rate = -(n * sxy - sx * sy) / (n * sxx - sx * sx), theory = 4.0 * nu * k * k;
+    double rate = -least_squares_slope(t, ln_e, n, NULL), theory = 4.0 * nu * k * k;
     printf("energy decay rate %.4f 1/s, linear theory 4 nu k^2 = %.4f 1/s (%+.1f %%)\n", rate,
            theory, 100.0 * (rate / theory - 1.0));
     assert_close(rate / theory, 1.0, 0.2); /* the 20 % */

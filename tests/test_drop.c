@@ -41,6 +41,7 @@
 #include <cmocka.h>
 
 #include "check.h"
+#include "slope.h"
 
 #define SIGMA 0.0727 /* N/m */
 #define RHO   1000.0
@@ -256,35 +257,13 @@ static double t_quantile_99(int dof)
     return t[(dof < 1 ? 1 : dof > 10 ? 10 : dof) - 1];
 }
 
-/* The least-squares slope of y against x (n >= 3 points), and its standard error from the
- * residuals */
-static double slope_with_error(const double *x, const double *y, int n, double *error)
-{
-    double mx = 0.0, my = 0.0, sxx = 0.0, sxy = 0.0, residual2 = 0.0;
-    for (int k = 0; k < n; k++) {
-        mx += x[k] / n;
-        my += y[k] / n;
-    }
-    for (int k = 0; k < n; k++) {
-        sxx += (x[k] - mx) * (x[k] - mx);
-        sxy += (x[k] - mx) * (y[k] - my);
-    }
-    double slope = sxy / sxx;
-    for (int k = 0; k < n; k++) {
-        double r = y[k] - my - slope * (x[k] - mx);
-        residual2 += r * r;
-    }
-    *error = sqrt(residual2 / (n - 2) / sxx);
-    return slope;
-}
-
 /* Whether the growth rate of ln y over the blocks is not significantly positive: slope <= t
  * s_slope, one-sided 99 %. Prints it. */
 static bool not_growing(const char *what, const double *t, const double *y, int n)
 {
     double ln_y[MAX_BLOCKS], error;
     for (int k = 0; k < n; k++) ln_y[k] = log(y[k]);
-    double rate = slope_with_error(t, ln_y, n, &error), bound = t_quantile_99(n - 2) * error;
+    double rate = least_squares_slope(t, ln_y, n, &error), bound = t_quantile_99(n - 2) * error;
     printf("%s: growth rate %+.3f /s over %d blocks, standard error %.3f, 99 %% bound %.3f /s\n",
            what, rate, n, error, bound);
     return rate <= bound;
