@@ -9,7 +9,7 @@
  * against the smallest size's in the same round (the median over the rounds, and their range),
  * its neighbours within 2h a particle, and the walls' images per fluid particle (each a slot
  * of the store that the heap per particle and the step's ghost passes count; the narrow 3D
- * tank has 1.5 at 7,560 particles, 0.26 at 945,000): a flat curve means the cache and the
+ * tank has 1.08 at 17,920 particles, 0.26 at 945,000): a flat curve means the cache and the
  * neighbour search scale (issue 22 asks for 20 %). A benchmark: it never fails on timing.
  * Usage: bench_scaling_2d [MAX] */
 #include "app/progress.h"
@@ -48,6 +48,10 @@ static const char tank_name[] = "3D INM2 tank";
 #endif
 static const double liquid_height = 0.35;
 
+/* The fluid particles of the lattice at resolution N (H_L / dr), its spacing the same along
+ * every axis (N a multiple of 7, below). */
+static double fluid_particles(int n) { return liquid_volume * pow(n / liquid_height, DIM); }
+
 /* The resolution H_L / dr nearest to the one that gives about `particles` fluid particles
  * among those that give the lattice the spacing dr along every axis. The lattice fits a whole
  * number of particles into each side of the liquid box (core/derived.c), spaced within
@@ -56,12 +60,18 @@ static const double liquid_height = 0.35;
  * a spacing a few per cent under dr across one side brings them inside: the 3D tank's 0.1 m width
  * at 1e4 particles (6.57 dr, seven particles across) gave 125 neighbours within 2h where 1e5 (14.29
  * dr, fourteen) gave 93, and cost a third more per particle-step for it. Sides of 1, 0.1 and 0.35 m
- * hold 20 N / 7, 2 N / 7 and N spacings: N a multiple of 7 makes all of them dr. */
-static int resolution_for(double particles)
+ * hold 20 N / 7, 2 N / 7 and N spacings: N a multiple of 7 makes all of them dr. The sizes
+ * stay within the range the curve is asked over ([lo, hi]: 1e4 and MAX): the nearest to a
+ * target, unless it falls outside, then the nearest inside (1e4 gave 7,560 particles in 3D and
+ * 8,960 in 2D, below the range). */
+static int resolution_for(double particles, double lo, double hi)
 {
     double dr = pow(liquid_volume / particles, 1.0 / DIM);
     int sevens = (int)lround(liquid_height / dr / 7.0);
-    return 7 * (sevens < 1 ? 1 : sevens);
+    if (sevens < 1) sevens = 1;
+    while (fluid_particles(7 * sevens) < lo) sevens++;
+    while (sevens > 1 && fluid_particles(7 * sevens) > hi) sevens--;
+    return 7 * sevens;
 }
 
 /* The mean number of neighbours within 2h of a fluid particle in the rows of the step last
@@ -102,10 +112,10 @@ static int by_value(const void *a, const void *b)
  * and guesses the rows' length, the second sizes them by the first's longest row); its bytes
  * per particle are what the heap in use grew by (bench_memory.h: the sizes set up before it
  * stay alive). 0, or -1 on error. */
-static int set_up_size(size_run *r, double target)
+static int set_up_size(size_run *r, double target, double max)
 {
     char set[64], err[1024];
-    snprintf(set, sizeof set, "numerics.resolution=%d", resolution_for(target));
+    snprintf(set, sizeof set, "numerics.resolution=%d", resolution_for(target, 1e4, max));
     const char *overrides[] = {set};
     double heap0 = heap_in_use();
     if (config_load_string(&r->cfg, bench_case, "scaling", overrides, 1, err, sizeof err) ||
@@ -142,7 +152,7 @@ int main(int argc, char **argv)
     size_run *runs = calloc(MAX_SIZES, sizeof *runs);
     int sizes = 0;
     for (double target = 1e4; target <= max * 1.01 && sizes < MAX_SIZES; target *= sqrt(10.0))
-        if (!runs || set_up_size(&runs[sizes++], target)) return 1;
+        if (!runs || set_up_size(&runs[sizes++], target, max)) return 1;
     for (int round = 0; round < ROUNDS; round++)
         for (int k = 0; k < sizes; k++)
             if ((runs[k].us[round] = time_round(&runs[k])) < 0.0) return 1;

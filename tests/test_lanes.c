@@ -55,12 +55,15 @@ static bool lanes_of_width(int width)
 }
 
 /* n_values doubles at a and b: how many differ in their bits */
-static size_t differing(const double *a, const double *b, size_t n_values)
+/* The values of a and b (n_values of `size` bytes each) whose bits differ. */
+static size_t differing_values(const void *a, const void *b, size_t n_values, size_t size)
 {
     size_t differ = 0;
-    for (size_t v = 0; v < n_values; v++) differ += memcmp(&a[v], &b[v], sizeof(double)) != 0;
+    for (size_t v = 0; v < n_values; v++)
+        differ += memcmp((const char *)a + v * size, (const char *)b + v * size, size) != 0;
     return differ;
 }
+#define differing(a, b, n_values) differing_values(a, b, n_values, sizeof *(a))
 
 static void rhs_lanes_give_the_scalar_bits(int width)
 {

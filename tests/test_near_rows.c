@@ -5,6 +5,7 @@
  * no pass of the step's preparation moves a particle, which is what makes the near parts
  * valid for them (solver_prepared_rows). */
 #include "core/lanes_switch.h"
+#include "diag/freesurface.h"
 #include "diag/volume.h"
 #include "scheme/fields.h"
 #include "scheme/passes.h"
@@ -39,6 +40,7 @@ static void run_passes(solver *s, const neighbour_list *nl, double *out)
     size_t n = p->n_fluid;
     tank_frame frame = solver_frame(s, s->t);
     fields_geometry(&s->pp, &s->tank, p, nl);
+    freesurface_test(&s->pp.k, s->pp.dr, s->pp.normal_reference, p, nl); /* normalises */
     step_diffusion diffusion = {.mass = false, .dt = s->dt};
     fields_shifting_and_correction(&s->pp, p, nl, true, true, &diffusion, DIFFUSION_ROWS_OFF_WALLS);
     fields_frozen_terms(&s->pp, p, nl, &frame, &diffusion, DIFFUSION_ROWS_AT_WALLS);

@@ -188,7 +188,7 @@ static int rebuild_whole(run *r, particles *q)
         tank_make_ghosts(&s->tank, q, 2.0 * s->dv.h + s->skin))
         return -1;
     tank_frame frame = solver_frame(s, s->t);
-    tank_refresh_ghosts(&s->tank, q, &frame, s->pp.rho0, s->pp.c0);
+    tank_refresh_ghosts(q, &frame, s->pp.rho0, s->pp.c0);
     return 0;
 }
 
@@ -343,7 +343,7 @@ void run_write_series_row(run *r, int with_geometry)
 
 /* The snapshot type of a field of the registry. */
 #define SNAPSHOT_TYPE(type)                                                                        \
-    _Generic((type *)0, double *: FIELD_DOUBLE, int64_t *: FIELD_INT64, int32_t *: FIELD_INT32,    \
+    _Generic((type *)0, double *: FIELD_DOUBLE, float *: FIELD_FLOAT, int64_t *: FIELD_INT64, int32_t *: FIELD_INT32,    \
              uint8_t *: FIELD_UINT8)
 
 /* At most every field of the registry. */

@@ -115,6 +115,7 @@ static inline size_t chunk_end(size_t c, size_t n)
 int tank_make_ghosts(const tank *t, particles *p, double reach)
 {
     p->ghost_maps = t->maps;
+    p->no_slip_images = t->wall == WALL_NO_SLIP;
     size_t n_fluid = p->n_fluid, n_sources = particles_images_begin(p);
     size_t chunks = (n_sources + GHOST_CHUNK - 1) / GHOST_CHUNK;
     /* in the sources' order (the fluid, then an MPI run's halo), whatever the thread count,
@@ -158,11 +159,9 @@ int tank_make_ghosts(const tank *t, particles *p, double reach)
     return room ? 0 : -1;
 }
 
-void tank_refresh_ghosts(const tank *t, particles *p, const tank_frame *frame, double rho0,
-                         double c0)
+void tank_refresh_ghosts(particles *p, const tank_frame *frame, double rho0, double c0)
 {
     size_t n_fluid = p->n_fluid;
-    int no_slip = t->wall == WALL_NO_SLIP;
 #pragma omp parallel for schedule(static)
     for (size_t g = particles_images_begin(p); g < p->n_total; g++) {
         size_t i = (size_t)p->ghost_source[g - n_fluid];
@@ -172,7 +171,6 @@ void tank_refresh_ghosts(const tank *t, particles *p, const tank_frame *frame, d
         vec ug = ghost_map_vector(map, ui);
         vec_store(p->x, g, xg);
         vec_store(p->u, g, ug);
-        vec_store(p->u_wall, g - n_fluid, no_slip ? vec_scale(ui, -1.0) : ug);
         /* the hydrostatic continuation under the source's body force */
         vec force = frame_body_force(frame, xi, ui);
         double pg = p->p[i] + p->rho[i] * vec_dot(force, vec_sub(xg, xi));
@@ -221,7 +219,7 @@ void tank_mirror_step_fields(particles *p, const tank_frame *frame, double c0)
     }
 }
 
-void tank_copy_to_ghosts(const particles *p, double *field)
+void tank_copy_to_ghosts(const particles *p, frozen_real *field)
 {
     size_t n_fluid = p->n_fluid;
 #pragma omp parallel for schedule(static)

@@ -48,12 +48,11 @@ static inline wall_plane tank_plane(const tank *t, int k) { return t->planes[k];
 int tank_make_ghosts(const tank *t, particles *p, double reach);
 
 /* Ghost state from the current fluid state (every RK stage): mirrored position; velocity
- * with the normal components reversed (free slip) and, for the viscous term, reversed
- * whole (no slip); mass of the source; pressure continued hydrostatically,
- * p_g = p_i + rho_i f_i . (r_g - r_i) with f_i the body force of the tank frame at
- * the source (frame.h; g - a_tank today), and density from the EOS. Needs fluid p. */
-void tank_refresh_ghosts(const tank *t, particles *p, const tank_frame *frame, double rho0,
-                         double c0);
+ * with the normal components reversed (free slip; the viscous term's no-slip image, reversed
+ * whole, is read through the source: particle_viscous_velocity); mass of the source; pressure
+ * continued hydrostatically, p_g = p_i + rho_i f_i . (r_g - r_i) with f_i the body force of the
+ * tank frame at the source (frame.h; g - a_tank today), and density from the EOS. Needs fluid p. */
+void tank_refresh_ghosts(particles *p, const tank_frame *frame, double rho0, double c0);
 
 /* Per-step fields of the ghosts from their sources: eddy viscosity, diffusion coefficient and
  * S_F flag copied, the shifting velocity mirrored (free slip): the fields marked
@@ -71,7 +70,7 @@ void tank_mirror_diffusion_fields(particles *p, const tank_frame *frame, double 
 
 /* A per-particle scalar of the fluid copied to its ghosts (a field that is even across the
  * walls: the ghost carries its source's value). */
-void tank_copy_to_ghosts(const particles *p, double *field);
+void tank_copy_to_ghosts(const particles *p, frozen_real *field);
 
 /* Bounce-back (sec. 2.5), at the start of a step once its shifting velocity du is known:
  * a particle that its transport velocity u + du (+ the volume correction's) takes closer than

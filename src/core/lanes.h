@@ -41,21 +41,44 @@ LANE_INLINE lane_real lane_select(lane_mask m, lane_real a, lane_real b)
     return (lane_real)((m & (lane_mask)a) | (~m & (lane_mask)b));
 }
 
-/* a[j[0]], ..., a[j[LANES - 1]] */
-LANE_INLINE lane_real lane_gather(const double *a, const int32_t j[LANES])
-{
-    lane_real r;
-    for (int l = 0; l < LANES; l++) r[l] = a[j[l]];
-    return r;
-}
-
-/* a[i], ..., a[i + LANES - 1] */
-LANE_INLINE lane_real lane_load(const double *a, size_t i)
-{
-    lane_real r;
-    for (int l = 0; l < LANES; l++) r[l] = a[i + (size_t)l];
-    return r;
-}
+/* The readers of a field, for the store's double and single-precision fields alike
+ * (core/particles.h: frozen_real), each element widened to double: lane_gather(a, j) is
+ * a[j[0]], ..., a[j[LANES - 1]], lane_load(a, i) a[i], ..., a[i + LANES - 1], and
+ * lane_vec_gather and lane_vec_load the same for the DIM component arrays of a vector. */
+#define LANE_READERS(type)                                                                         \
+    LANE_INLINE lane_real lane_gather_##type(const type *a, const int32_t j[LANES])                \
+    {                                                                                              \
+        lane_real r;                                                                               \
+        for (int l = 0; l < LANES; l++) r[l] = a[j[l]];                                            \
+        return r;                                                                                  \
+    }                                                                                              \
+    LANE_INLINE lane_real lane_load_##type(const type *a, size_t i)                                \
+    {                                                                                              \
+        lane_real r;                                                                               \
+        for (int l = 0; l < LANES; l++) r[l] = a[i + (size_t)l];                                   \
+        return r;                                                                                  \
+    }                                                                                              \
+    LANE_INLINE lane_vec lane_vec_gather_##type(type *const x[DIM], const int32_t j[LANES])        \
+    {                                                                                              \
+        lane_vec v;                                                                                \
+        for (int d = 0; d < DIM; d++) v.c[d] = lane_gather_##type(x[d], j);                        \
+        return v;                                                                                  \
+    }                                                                                              \
+    LANE_INLINE lane_vec lane_vec_load_##type(type *const x[DIM], size_t i)                        \
+    {                                                                                              \
+        lane_vec v;                                                                                \
+        for (int d = 0; d < DIM; d++) v.c[d] = lane_load_##type(x[d], i);                          \
+        return v;                                                                                  \
+    }
+LANE_READERS(double)
+LANE_READERS(float)
+#define LANE_READER(a, name) _Generic((a)[0], float : name##_float, default : name##_double)
+#define lane_gather(a, j)    LANE_READER(a, lane_gather)(a, j)
+#define lane_load(a, i)      LANE_READER(a, lane_load)(a, i)
+#define lane_vec_gather(x, j)                                                                      \
+    _Generic((x)[0], float * : lane_vec_gather_float, default : lane_vec_gather_double)(x, j)
+#define lane_vec_load(x, i)                                                                        \
+    _Generic((x)[0], float * : lane_vec_load_float, default : lane_vec_load_double)(x, i)
 
 /* whether any lane of m is set */
 LANE_INLINE bool lane_any(lane_mask m)
@@ -63,20 +86,6 @@ LANE_INLINE bool lane_any(lane_mask m)
     int64_t any = 0;
     for (int l = 0; l < LANES; l++) any |= m[l];
     return any != 0;
-}
-
-LANE_INLINE lane_vec lane_vec_gather(double *const x[DIM], const int32_t j[LANES])
-{
-    lane_vec v;
-    for (int d = 0; d < DIM; d++) v.c[d] = lane_gather(x[d], j);
-    return v;
-}
-
-LANE_INLINE lane_vec lane_vec_load(double *const x[DIM], size_t i)
-{
-    lane_vec v;
-    for (int d = 0; d < DIM; d++) v.c[d] = lane_load(x[d], i);
-    return v;
 }
 
 /* The correctly rounded square root of each lane (sqrtpd), as sqrt() of each. */

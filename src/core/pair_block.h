@@ -70,12 +70,23 @@ PAIR_BLOCK_INLINE void pair_block_at(const pair_row *rw, int32_t n0, pair_block_
 
 /* a[j[0]], ..., a[j[PAIR_BLOCK - 1]], element by element into the register: through memory,
  * the block's load would wait for eight stores (no store forwarding) */
-PAIR_BLOCK_INLINE pair_block pair_block_gather(const double *a, const int32_t *j)
+PAIR_BLOCK_INLINE pair_block pair_block_gather_double(const double *a, const int32_t *j)
 {
     pair_block r;
     for (int l = 0; l < PAIR_BLOCK; l++) r[l] = a[j[l]];
     return r;
 }
+
+/* the same of a single-precision field (core/particles.h: frozen_real), widened to double */
+PAIR_BLOCK_INLINE pair_block pair_block_gather_float(const float *a, const int32_t *j)
+{
+    pair_block r;
+    for (int l = 0; l < PAIR_BLOCK; l++) r[l] = a[j[l]];
+    return r;
+}
+
+#define pair_block_gather(a, j)                                                                    \
+    _Generic((a)[0], float : pair_block_gather_float, default : pair_block_gather_double)(a, j)
 
 PAIR_BLOCK_INLINE pair_block pair_block_broadcast(double a) { return (pair_block){0} + a; }
 
@@ -122,7 +133,7 @@ PAIR_BLOCK_INLINE void pair_block_moments_total(const pair_block_moments *m, mat
 
 /* The viscous term's velocity of the block's neighbours, component by component: their own
  * velocity, or, where the row reaches a ghost, particle_viscous_velocity's (a wall image's
- * u_wall). */
+ * no-slip or free-slip image). */
 PAIR_BLOCK_INLINE void pair_block_viscous_velocity(const particles *p, const pair_block_geometry *b,
                                                    bool ghosts, pair_block u[DIM])
 {

@@ -32,6 +32,17 @@ enum {
     FIELD_GHOSTS_ONLY = 32   /* held by the tail [n_fluid, n_total) only, indexed g - n_fluid */
 };
 
+/* The per-step fields that only weigh a correction term (the density gradient and the
+ * diffusion coefficient of Eq. (5), the eddy viscosity, the shifting velocity of Eq. (7), the
+ * volume correction's mismatch) are held in single precision: every wall image holds them too,
+ * and in a narrow 3D tank the images outnumber the fluid (issue 22's bytes per particle). Each
+ * is computed in double and rounded once when stored (a relative 6e-8, far below the
+ * discretisation's error in these terms); the pair sums that read them stay in double, and
+ * every pair form that reads them is symmetric in i and j as before, so the mass and momentum
+ * stay conserved to round-off. The state, the pressure, the volumes and every quantity of the
+ * run-time volume measures stay in double (docs/performance.md: how far eps_V1 moved). */
+typedef float frozen_real;
+
 #define PARTICLE_FIELDS(SCALAR, VECTOR)                                                            \
     /* state of every particle (ghosts: mirrored from their source each RK stage) */               \
     SCALAR(int64_t, id, FIELD_STATE | FIELD_SOURCES_ONLY, "id", "global id of the fluid particle") \
@@ -43,22 +54,22 @@ enum {
            "mass (a wall's image has its source's)")                                               \
     SCALAR(double, vol, 0, "volume", "SPH volume m/rho")                                           \
     /* per-step fields, frozen over the RK stages (sec. 2.4); ghosts copy their source's */        \
-    VECTOR(double, grad_rho, 0, NULL, "renormalized density gradient <grad rho>^L")                \
-    SCALAR(double, nu_t, FIELD_GHOST_COPY, NULL,                                                   \
+    VECTOR(frozen_real, grad_rho, 0, NULL, "renormalized density gradient <grad rho>^L")           \
+    SCALAR(frozen_real, nu_t, FIELD_GHOST_COPY, NULL,                                              \
            "Smagorinsky eddy viscosity with van Driest damping, m^2/s")                            \
-    SCALAR(double, nu_delta, FIELD_GHOST_COPY, NULL,                                               \
+    SCALAR(frozen_real, nu_delta, FIELD_GHOST_COPY, NULL,                                          \
            "diffusion coefficient nu^delta of Eq. (5), m^2/s")                                     \
     SCALAR(double, lambda, FIELD_SOURCES_ONLY, "lambda",                                           \
            "smallest eigenvalue of L, Eq. (10) (fluid)")                                           \
     VECTOR(double, normal, FIELD_SOURCES_ONLY, NULL,                                               \
-           "unit normal -L^-1 sum grad W V, out of the fluid (theory §4); in S_F below the free " \
-           "surface, the nearest free-surface neighbour's (equidistant ones averaged)")            \
-    SCALAR(double, normal_raw, FIELD_SOURCES_ONLY, NULL, "|L^-1 sum grad W V| before normalising") \
+           "unit normal -L^-1 sum grad W V out of the fluid (theory §4; unnormalised until the "  \
+           "free-surface test); in S_F below the free surface, the nearest free-surface "          \
+           "neighbour's (equidistant ones averaged)")                                              \
     SCALAR(double, kernel_sum, FIELD_SOURCES_ONLY, NULL,                                           \
            "sum_j W_ij, self included: 1 / geometric volume, Eq. (11)")                            \
     SCALAR(double, gamma, FIELD_SOURCES_ONLY, NULL,                                                \
            "Gamma_i = sum_j W_ij V_j, self included, Eq. (A.2)")                                   \
-    SCALAR(double, volume_mismatch, 0, NULL,                                                       \
+    SCALAR(frozen_real, volume_mismatch, 0, NULL,                                                  \
            "e_i = V_i sum_j W_ij / kappa - 1: SPH over geometric volume, with the geometric "      \
            "correction only (volume_correction.h)")                                                \
     SCALAR(uint8_t, surface, FIELD_GHOST_COPY, "surface",                                          \
@@ -68,7 +79,8 @@ enum {
     SCALAR(double, eps_vi, FIELD_SOURCES_ONLY, "eps_vi",                                           \
            "the local volume error eps_Vi^(1) of Eq. (12), computed for the snapshots")            \
     SCALAR(double, diff_m, FIELD_SOURCES_ONLY, NULL, "mass diffusion D^m of Eq. (5) (fluid)")      \
-    VECTOR(double, shift, FIELD_GHOST_MIRROR, "shifting", "shifting velocity delta-u, Eq. (7)")    \
+    VECTOR(frozen_real, shift, FIELD_GHOST_MIRROR, "shifting",                                     \
+           "shifting velocity delta-u, Eq. (7)")                                                   \
     VECTOR(double, correction, FIELD_SOURCES_ONLY, NULL,                                           \
            "the geometric volume correction's velocity (zero without it), "                        \
            "scheme/volume_correction.h")                                                           \
@@ -81,10 +93,6 @@ enum {
     VECTOR(double, st_force, FIELD_SOURCES_ONLY, NULL,                                             \
            "F^st V_i, the surface-tension force on the particle at the current RK stage, N")       \
     /* ghosts only, indexed g - n_fluid */                                                         \
-    VECTOR(double, u_wall, FIELD_GHOSTS_ONLY, NULL,                                                \
-           "a wall image's velocity as the viscous term and the velocity gradient see it: the "    \
-           "no-slip or free-slip image (a fluid or halo particle's is its u: "                     \
-           "particle_viscous_velocity)")                                                           \
     SCALAR(uint8_t, ghost_kind, FIELD_GHOSTS_ONLY, NULL,                                           \
            "what the ghost is (ghost_kind): a wall's image")                                       \
     SCALAR(int32_t, ghost_source, FIELD_GHOSTS_ONLY, NULL, "fluid index it mirrors")               \
@@ -134,6 +142,7 @@ typedef struct {
     size_t ghosts_capacity;  /* the slots of the FIELD_GHOSTS_ONLY fields */
     PARTICLE_FIELDS(PARTICLE_SCALAR_MEMBER, PARTICLE_VECTOR_MEMBER)
     const ghost_map *ghost_maps; /* the table of the provider that made the ghosts */
+    bool no_slip_images; /* the walls' images are no-slip ones (particle_viscous_velocity) */
 } particles;
 
 /* What a particle of the tail [n_fluid, n_total) stands for. A loop that treats walls apart
@@ -147,13 +156,6 @@ typedef enum {
 /* The first wall image of the tail; the fluid particles and the halo before it are the images'
  * sources. */
 static inline size_t particles_images_begin(const particles *p) { return p->n_fluid + p->n_halo; }
-
-/* The velocity the viscous term and the velocity gradient see at particle j: a fluid or halo
- * particle's own, a wall image's no-slip or free-slip image (u_wall). */
-static inline vec particle_viscous_velocity(const particles *p, size_t j)
-{
-    return j < particles_images_begin(p) ? vec_load(p->u, j) : vec_load(p->u_wall, j - p->n_fluid);
-}
 
 /* The map of ghost g (n_fluid <= g < n_total). */
 static inline const ghost_map *particle_ghost_map(const particles *p, size_t g)
@@ -185,6 +187,17 @@ static inline vec ghost_map_point(const ghost_map *m, vec x)
 static inline size_t particle_source_of(const particles *p, size_t j)
 {
     return j < particles_images_begin(p) ? j : (size_t)p->ghost_source[j - p->n_fluid];
+}
+
+/* The velocity the viscous term and the velocity gradient see at particle j: a fluid or halo
+ * particle's own; a wall image's no-slip image, its source's velocity reversed (the walls are
+ * at rest in the tank frame), or its free-slip image, the mirrored velocity the image holds.
+ * Read through the source rather than held by each image: 24 bytes an image less in 3D, and
+ * only the rows that reach a wall ask (issue 22). */
+static inline vec particle_viscous_velocity(const particles *p, size_t j)
+{
+    if (j < particles_images_begin(p) || !p->no_slip_images) return vec_load(p->u, j);
+    return vec_scale(vec_load(p->u, particle_source_of(p, j)), -1.0);
 }
 
 /* A field that no wall image holds, at particle j as an image would hold it: a scalar is its

@@ -78,14 +78,15 @@ void freesurface_test(const kernel *k, double dr, double normal_reference, parti
 {
     double radius = FREESURFACE_SCAN_OVER_DR * dr;
     TEAM_FOR (i, p->n_fluid) {
-        double lambda = p->lambda[i];
+        double lambda = p->lambda[i], length;
+        vec_store(p->normal, i, unit_vector(vec_load(p->normal, i), &length));
         int on_surface;
         if (lambda <= FREESURFACE_LAMBDA_FREE)
             on_surface = 1;
         else if (lambda > FREESURFACE_LAMBDA_INTERIOR)
             on_surface = 0;
         /* a nearly symmetric neighbourhood has no reliable normal: interior (theory §4) */
-        else if (p->normal_raw[i] < 0.5 * normal_reference)
+        else if (length < 0.5 * normal_reference)
             on_surface = 0;
         else
             on_surface = !covered(k, p, nl, i, radius);

@@ -29,13 +29,25 @@ static inline mat renormalization(const mat *l, bool well_conditioned)
     return l_inv;
 }
 
-/* The unit normal out of the fluid, -L^-1 sum grad W V normalised (theory §4), from
- * grad_one = sum r_ji F V_j; *length gets |L^-1 sum grad W V|. */
+/* The normal out of the fluid before it is normalised, -L^-1 sum grad W V (theory §4), from
+ * grad_one = sum r_ji F V_j. */
+static inline vec outward_direction(const mat *l_inv, vec grad_one)
+{
+    return vec_scale(mat_mul_vec(l_inv, grad_one), -1.0);
+}
+
+/* v / |v| (v itself when zero); *length gets |v|. */
+static inline vec unit_vector(vec v, double *length)
+{
+    *length = vec_norm(v);
+    return *length > 0.0 ? vec_scale(v, 1.0 / *length) : v;
+}
+
+/* The unit normal out of the fluid, -L^-1 sum grad W V normalised; *length gets
+ * |L^-1 sum grad W V|. */
 static inline vec outward_normal(const mat *l_inv, vec grad_one, double *length)
 {
-    vec normal = vec_scale(mat_mul_vec(l_inv, grad_one), -1.0);
-    *length = vec_norm(normal);
-    return *length > 0.0 ? vec_scale(normal, 1.0 / *length) : normal;
+    return unit_vector(outward_direction(l_inv, grad_one), length);
 }
 
 #define freesurface_flat_sums        DIM_NAME(freesurface_flat_sums)
@@ -53,7 +65,9 @@ double freesurface_reference_normal(const kernel *k, double dr);
 
 /* The free surface in two passes, because the second reads the first's result at the
  * neighbours (an MPI run refreshes its halo between them). freesurface_test fills p->is_free
- * of the fluid from lambda, normal and normal_raw of this step (Marrone et al. 2010);
+ * of the fluid from lambda and the normal of this step (Marrone et al. 2010), which the
+ * geometry pass leaves unnormalised, -L^-1 sum grad W V, and the test normalises (its length
+ * is part of the test, and kept nowhere else);
  * freesurface_region then fills p->surface (S_F: the free surface and the fluid within 2h of
  * it) and gives S_F's other particles the normal of their nearest free-surface neighbour;
  * `g`, the cells the rows were built from, tells it which rows can hold no free-surface

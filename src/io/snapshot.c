@@ -52,13 +52,14 @@ static void fail_hdf5(const report *r, const char *what, const char *name)
 
 static size_t field_elem_size(field_type t)
 {
-    return t == FIELD_UINT8 ? 1 : (t == FIELD_INT32 ? 4 : 8);
+    return t == FIELD_UINT8 ? 1 : (t == FIELD_INT32 || t == FIELD_FLOAT ? 4 : 8);
 }
 
 static hid_t field_mem_type(field_type t)
 {
     switch (t) {
     case FIELD_DOUBLE: return H5T_NATIVE_DOUBLE;
+    case FIELD_FLOAT: return H5T_NATIVE_FLOAT;
     case FIELD_INT64: return H5T_NATIVE_INT64;
     case FIELD_INT32: return H5T_NATIVE_INT32;
     case FIELD_UINT8: return H5T_NATIVE_UINT8;
@@ -71,6 +72,7 @@ static hid_t field_file_type(field_type t)
 {
     switch (t) {
     case FIELD_DOUBLE: return H5T_IEEE_F64LE;
+    case FIELD_FLOAT: return H5T_IEEE_F32LE;
     case FIELD_INT64: return H5T_STD_I64LE;
     case FIELD_INT32: return H5T_STD_I32LE;
     case FIELD_UINT8: return H5T_STD_U8LE;
@@ -80,7 +82,8 @@ static hid_t field_file_type(field_type t)
 
 static bool field_type_valid(field_type t)
 {
-    return t == FIELD_DOUBLE || t == FIELD_INT64 || t == FIELD_INT32 || t == FIELD_UINT8;
+    return t == FIELD_DOUBLE || t == FIELD_FLOAT || t == FIELD_INT64 || t == FIELD_INT32 ||
+           t == FIELD_UINT8;
 }
 
 static int check_fields(size_t n, const snapshot_field *fields, int n_fields, char *err,
@@ -446,8 +449,9 @@ static void xml_puts(FILE *out, const char *s)
 static void xdmf_data_item(FILE *out, const char *indent, const char *file, const snapshot_field *f,
                            size_t n)
 {
-    const char *number_type =
-        f->type == FIELD_DOUBLE ? "Float" : (f->type == FIELD_UINT8 ? "UChar" : "Int");
+    const char *number_type = f->type == FIELD_DOUBLE || f->type == FIELD_FLOAT
+                                  ? "Float"
+                                  : (f->type == FIELD_UINT8 ? "UChar" : "Int");
     fprintf(out, "%s<DataItem Format=\"HDF\" NumberType=\"%s\" Precision=\"%zu\" Dimensions=\"%zu",
             indent, number_type, field_elem_size(f->type), n);
     if (f->ncomp > 1) fprintf(out, " %d", f->ncomp);

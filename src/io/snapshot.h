@@ -5,7 +5,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-typedef enum { FIELD_DOUBLE, FIELD_INT64, FIELD_INT32, FIELD_UINT8 } field_type;
+typedef enum { FIELD_DOUBLE, FIELD_FLOAT, FIELD_INT64, FIELD_INT32, FIELD_UINT8 } field_type;
 
 /* One dataset: n rows of ncomp components. Components are separate arrays (SoA); the file
  * stores them interleaved as an n x ncomp dataset (n when ncomp == 1). */

@@ -61,7 +61,7 @@ PAIR_BLOCK_INLINE neighbour_sums geometry_sums(const kernel *k, const particles 
                                                const neighbour_list *nl, size_t i)
 {
     vec xi = vec_load(p->x, i), ui = vec_load(p->u, i);
-    /* a row that reaches no ghost has no wall image to ask for its u_wall */
+    /* a row that reaches no ghost has no wall image to ask for its viscous velocity */
     bool ghosts = neighbour_row_has_ghosts(nl, i);
     PAIR_ROW(k, p->x, nl, i, xi, row);
     neighbour_block_sums bs;
@@ -107,7 +107,8 @@ void fields_geometry(const physics_params *pp, const tank *t, particles *p,
         p->gamma[i] = s.wv + k->norm * p->vol[i];
         /* near-singular L (drops, jets): fall back to the plain gradient (theory §2) */
         mat l_inv = renormalization(&s.l, lambda > pp->lambda_renormalize);
-        vec_store(p->normal, i, outward_normal(&l_inv, s.grad_one, &p->normal_raw[i]));
+        /* unnormalised: freesurface_test normalises it and tests its length */
+        vec_store(p->normal, i, outward_direction(&l_inv, s.grad_one));
         vec_store(p->grad_rho, i, mat_mul_vec(&l_inv, s.drho));
         double g[DIM][DIM];
         for (int a = 0; a < DIM; a++) {

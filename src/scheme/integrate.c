@@ -62,7 +62,7 @@ static int build_neighbours(solver *s, double dt, const tank_frame *frame)
     if (s->domain && s->domain->distribute(s->domain, s)) return -1;
     if (tank_make_ghosts(&s->tank, p, cutoff)) return -1;
     solver_update_eos(s);
-    tank_refresh_ghosts(&s->tank, p, frame, s->pp.rho0, s->pp.c0);
+    tank_refresh_ghosts(p, frame, s->pp.rho0, s->pp.c0);
     if (cells_bin(&s->grid, p->x, p->n_total)) return -1;
     cells_room idle = {s->rk_block, 2 * RK_MASS * s->work_capacity}; /* solver.h */
     return neighbours_build(&s->nl, &s->grid, p->x, p->n_fluid, cutoff, s->pp.k.support2, idle);
@@ -219,7 +219,7 @@ void solver_advance(solver *s, double t_stop)
                             was set by the previous stage's rk_accumulate */
             if (s->domain) s->domain->refresh_halo(s->domain, p, INTEGRATED_FIELDS);
             solver_update_eos(s);
-            tank_refresh_ghosts(&s->tank, p, &frame, s->pp.rho0, s->pp.c0);
+            tank_refresh_ghosts(p, &frame, s->pp.rho0, s->pp.c0);
             if (s->pp.surface_tension) /* from the stage's positions (surface_tension.h) */
                 surface_tension_compute(&s->st, &s->pp.k, p, &s->nl, &s->bodies,
                                         solver_bodies_domain(s), &s->st_work,

@@ -15,7 +15,7 @@
 
 /* The fields a wall ghost takes from its source at every refresh (tank_refresh_ghosts): a pass
  * that changes one of them leaves the ghosts stale until the next refresh. */
-#define GHOST_STATE (F(x) | F(u) | F(u_wall) | F(rho) | F(p) | F(m) | F(vol))
+#define GHOST_STATE (F(x) | F(u) | F(rho) | F(p) | F(m) | F(vol))
 
 typedef struct {
     const char *name;
@@ -171,11 +171,10 @@ static long surface_tension(solver *s, const tank_frame *frame, const neighbour_
  * weighed by the volumes EdBC corrects; bounce-back needs the transport velocity u + du + dv
  * whole; the frozen terms and surface tension see the bounced velocities. */
 static const step_pass prepare_passes[] = {
-    {"geometry", F(x) | F(u) | F(u_wall) | F(rho) | F(vol),
-     F(lambda) | F(normal) | F(normal_raw) | F(kernel_sum) | F(gamma) | F(grad_rho) | F(nu_t) |
-         F(nu_delta),
-     NULL, geometry},
-    {"free-surface test", F(x) | F(lambda) | F(normal) | F(normal_raw), F(is_free), NULL,
+    {"geometry", F(x) | F(u) | F(rho) | F(vol),
+     F(lambda) | F(normal) | F(kernel_sum) | F(gamma) | F(grad_rho) | F(nu_t) | F(nu_delta), NULL,
+     geometry},
+    {"free-surface test", F(x) | F(lambda) | F(normal), F(is_free) | F(normal), NULL,
      free_surface_test},
     {"S_F", F(x) | F(is_free) | F(normal), F(surface) | F(normal), NULL, free_surface_region},
     {"eta control", F(kernel_sum) | F(surface), 0, has_eta_control, eta_control},
@@ -217,7 +216,7 @@ static void refresh_for(solver *s, const tank_frame *frame, uint64_t reads, uint
         *halo_stale = 0;
     }
     if (*ghost_stale & reads) {
-        tank_refresh_ghosts(&s->tank, &s->p, frame, s->pp.rho0, s->pp.c0);
+        tank_refresh_ghosts(&s->p, frame, s->pp.rho0, s->pp.c0);
         *ghost_stale = 0;
     }
 }

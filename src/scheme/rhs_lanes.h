@@ -72,15 +72,15 @@ rhs_lanes_sums(const physics_params *pp, const particles *p, const neighbour_lis
             mu_eff += pp->rho0 * mean;
         }
         /* the viscous term's velocity (particle_viscous_velocity): a fluid or halo
-           neighbour's own, a wall image's u_wall; and a wall image's p. Looked for only in
-           blocks whose rows reach a ghost */
+           neighbour's own, a wall image's no-slip or free-slip image; and a wall image's p.
+           Looked for only in blocks whose rows reach a ghost */
         lane_vec uwj = uj;
         if (ghosts)
             for (int l = 0; l < LANES; l++)
                 if ((size_t)j[l] >= images) {
                     if (ale) pj[l] = p->p[j[l]];
-                    for (int d = 0; d < DIM; d++)
-                        uwj.c[d][l] = p->u_wall[d][(size_t)j[l] - p->n_fluid];
+                    vec uw = particle_viscous_velocity(p, (size_t)j[l]);
+                    for (int d = 0; d < DIM; d++) uwj.c[d][l] = uw.c[d];
                 }
         force = lane_vec_add_where(within, force, lane_vec_scale(r_ji, -(pi + pj) * f * vj));
         lane_vec uw_ji = lane_vec_sub(uwj, ui);
