@@ -283,13 +283,13 @@ static bool pack_row(const int32_t *row, int32_t count, int32_t n_rows, uint16_t
 static int reserve_rows(neighbour_list *nl, size_t n_rows)
 {
     if (n_rows > nl->capacity_rows) {
-        int32_t *count = realloc(nl->count, n_rows * sizeof *count);
+        neighbour_count *count = realloc(nl->count, n_rows * sizeof *count);
         if (!count) return -1;
         nl->count = count;
         int32_t *base = realloc(nl->base, 2 * n_rows * sizeof *base);
         if (!base) return -1;
         nl->base = base;
-        int32_t *near = realloc(nl->near, n_rows * sizeof *near);
+        neighbour_count *near = realloc(nl->near, n_rows * sizeof *near);
         if (!near) return -1;
         nl->near = near;
         nl->capacity_rows = n_rows;
@@ -335,8 +335,8 @@ static int place_positions(cell_grid *g, size_t binned, cells_room lent)
  * row's count, which may exceed cap (then the row is not whole and the build is redone).
  * `scanned` is room for the scan's row and its squared distances, `skin` for the split. */
 static int32_t row_of(const cell_grid *g, double *const x[DIM], size_t i, double r2max,
-                      double near2, scan_row *scanned, int32_t *row, int32_t *skin, int32_t *near,
-                      cells_scan_fn scan, cells_split_fn split)
+                      double near2, scan_row *scanned, int32_t *row, int32_t *skin,
+                      neighbour_count *near, cells_scan_fn scan, cells_split_fn split)
 {
     scanned->found = 0;
     scan_neighbours(g, x, i, r2max, scanned, scan);
@@ -384,13 +384,14 @@ static int build_rows(neighbour_list *nl, const cell_grid *g, double *const x[DI
                                            nl->base + 2 * i))
                             misfit = true;
                     }
-                    nl->count[i] = k;
+                    nl->count[i] = (neighbour_count)k; /* whole only when k <= cap */
                     if (k > most) most = k;
                 }
         }
         nl->longest = most;
         if (!misfit && most <= cap) return 0;
         if (misfit) nl->wide = true; /* a row beyond its 16-bit windows: 32 bits from now on */
+        if (most > NEIGHBOUR_ROW_MAX) return -1;
         /* a row overflowed (strong compression): redo with room to spare */
         if (most > cap) nl->row_capacity = neighbours_row_room(most);
     }

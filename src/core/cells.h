@@ -49,13 +49,17 @@ typedef struct {
  * build where some row does not fit its windows keeps every row whole, 32 bits an entry
  * (`wide`), and so do the builds after it. neighbour_row reads either. */
 #define NEIGHBOUR_WINDOW 32768
+/* A row's number of entries: 16 bits (a row of more than NEIGHBOUR_ROW_MAX, some 500 times
+ * the lattice's density within 2h, fails the build: the flow has blown up long before) */
+typedef uint16_t neighbour_count;
+#define NEIGHBOUR_ROW_MAX UINT16_MAX
 typedef struct {
     size_t n_rows, row_capacity, capacity_rows, index_capacity;
-    int32_t *count;
-    int32_t *near;    /* n_rows: the entries of each row within the support at the build */
-    uint16_t *packed; /* n_rows x row_capacity entries; unless wide */
-    int32_t *base;    /* n_rows x 2: each row's windows' first indices; unless wide */
-    int32_t *index;   /* n_rows x row_capacity indices; when wide */
+    neighbour_count *count;
+    neighbour_count *near; /* n_rows: the entries of each row within the support at the build */
+    uint16_t *packed;      /* n_rows x row_capacity entries; unless wide */
+    int32_t *base;         /* n_rows x 2: each row's windows' first indices; unless wide */
+    int32_t *index;        /* n_rows x row_capacity indices; when wide */
     bool wide;
     int32_t longest; /* the longest row of the last build, which sizes the next one's rows */
     double radius;
@@ -161,13 +165,15 @@ void cells_sort_order(const cell_grid *g, size_t n, uint32_t *order);
  * where the row has room for it, and appends the last few entries one by one. */
 static inline size_t neighbours_row_room(int32_t longest)
 {
-    return (size_t)longest + (size_t)longest / 16;
+    size_t room = (size_t)longest + (size_t)longest / 16;
+    return room < NEIGHBOUR_ROW_MAX ? room : NEIGHBOUR_ROW_MAX;
 }
 /* Lists, for each of the first n_rows particles, its neighbours within `radius` among all the
  * binned particles, those at a squared distance below near2 first (the kernel's support2;
  * the squared distance added as vec_norm2 adds it, so a pair loop finds the same near pairs
  * to the bit); the positions' copy goes into `lent` where it is large enough (cells_room;
- * (cells_room){0}: the grid's own). Returns 0, or -1 when out of memory. */
+ * (cells_room){0}: the grid's own). Returns 0, or -1 when out of memory or when a row would
+ * hold more than NEIGHBOUR_ROW_MAX entries. */
 int neighbours_build(neighbour_list *nl, cell_grid *g, double *const x[DIM], size_t n_rows,
                      double radius, double near2, cells_room lent);
 void neighbours_free(neighbour_list *nl);

@@ -1,19 +1,20 @@
 /* particles: allocation and reordering of the SoA store. */
 #include "core/particles.h"
+#include "core/arrays.h"
 
 #include <stdbool.h>
 #include <stdlib.h>
 #include <string.h>
 
-/* Grows *ptr from `old` to `count` elements of `size` bytes, the new ones zero. */
-static int grow(void **ptr, size_t old, size_t count, size_t size)
+/* Grows *ptr from `old` to `count` elements of `size` bytes, the new ones zero (core/arrays.h:
+ * each field's array at its own offset in its pages). */
+static int grow(void **ptr, size_t old, size_t count, size_t size, int array)
 {
-    void *q = realloc(*ptr, count * size);
-    if (!q) return -1;
-    memset((char *)q + old * size, 0, (count - old) * size);
-    *ptr = q;
-    return 0;
+    return array_grow(ptr, old * size, old * size, count * size, array);
 }
+
+/* The array number (core/arrays.h) of component d of a field (d = 0: a scalar). */
+#define FIELD_ARRAY(name, d) ((int)FIELD_BIT_##name * DIM + (d))
 
 /* The fields' room classes: the whole store, the fluid and halo (FIELD_SOURCES_ONLY), the
  * tail's ghosts (FIELD_GHOSTS_ONLY). */
@@ -24,10 +25,13 @@ static int grow_fields(particles *p, unsigned room, size_t old, size_t capacity)
 {
 #define SELECTED(flags) (ROOM_CLASS(flags) == room)
 #define GROW_SCALAR(type, name, flags, snapshot, comment)                                          \
-    if (SELECTED(flags) && grow((void **)&p->name, old, capacity, sizeof(type))) return -1;
+    if (SELECTED(flags) &&                                                                         \
+        grow((void **)&p->name, old, capacity, sizeof(type), FIELD_ARRAY(name, 0)))                \
+        return -1;
 #define GROW_VECTOR(type, name, flags, snapshot, comment)                                          \
     for (int d = 0; d < DIM && SELECTED(flags); d++)                                               \
-        if (grow((void **)&p->name[d], old, capacity, sizeof(type))) return -1;
+        if (grow((void **)&p->name[d], old, capacity, sizeof(type), FIELD_ARRAY(name, d)))         \
+            return -1;
     PARTICLE_FIELDS(GROW_SCALAR, GROW_VECTOR)
     return 0;
 }
@@ -75,11 +79,22 @@ int particles_init(particles *p, size_t capacity)
     return particles_reserve(p, capacity < 16 ? 16 : capacity);
 }
 
+/* The slots the fields of room class `room` (ROOM_CLASS) have. */
+static size_t room_capacity(const particles *p, unsigned room)
+{
+    return room == FIELD_SOURCES_ONLY  ? p->sources_capacity
+           : room == FIELD_GHOSTS_ONLY ? p->ghosts_capacity
+                                       : p->capacity;
+}
+
 void particles_free(particles *p)
 {
-#define FREE_SCALAR(type, name, flags, snapshot, comment) free(p->name);
+#define FIELD_BYTES(type, flags) (room_capacity(p, ROOM_CLASS(flags)) * sizeof(type))
+#define FREE_SCALAR(type, name, flags, snapshot, comment)                                          \
+    array_free(p->name, FIELD_BYTES(type, flags), FIELD_ARRAY(name, 0));
 #define FREE_VECTOR(type, name, flags, snapshot, comment)                                          \
-    for (int d = 0; d < DIM; d++) free(p->name[d]);
+    for (int d = 0; d < DIM; d++)                                                                  \
+        array_free(p->name[d], FIELD_BYTES(type, flags), FIELD_ARRAY(name, d));
     PARTICLE_FIELDS(FREE_SCALAR, FREE_VECTOR)
     memset(p, 0, sizeof *p);
 }

@@ -1,6 +1,7 @@
 /* solver: set-up and the neighbour structures of a step. */
 #include "scheme/solver.h"
 #include "boundary/lattice.h"
+#include "core/arrays.h"
 #include "diag/freesurface.h"
 #include "diag/health.h"
 #include "physics/eos.h"
@@ -42,22 +43,45 @@ static void physics_setup(solver *s)
     s->st = surface_tension_setup(&pp->k, pp->dr, cfg->surface_tension, pp->lambda_renormalize);
 }
 
-static int grow(void **a, size_t n, size_t size)
+/* The work arrays' numbers (core/arrays.h: each at its own offset in its pages), after the
+ * particle store's fields'. */
+enum {
+    ARRAY_RATE_U = FIELD_BITS * DIM,
+    ARRAY_RATE_RHO = ARRAY_RATE_U + DIM,
+    ARRAY_RATE_M,
+    ARRAY_Y0_M,
+    ARRAY_SUM_M,
+    ARRAY_SCRATCH,
+    ARRAY_RK_BLOCK
+};
+
+/* Room for n elements of `size` bytes in work array number k, *a, which held `old` of them:
+ * nothing it held is kept (a work array holds nothing between the steps that grow it). */
+static int grow(void **a, size_t old, size_t n, size_t size, int k)
 {
-    void *grown = realloc(*a, n * size);
-    if (!grown) return -1;
-    *a = grown;
-    return 0;
+    return array_grow(a, old * size, 0, n * size, k);
 }
+
+/* The distance between the RK4 block's arrays, in doubles: at least n, and one cache line more
+ * than whole pages, so that each array starts its own line past a page boundary. */
+static size_t rk_stride(size_t n)
+{
+    size_t page = ARRAY_PAGE / sizeof(double), line = ARRAY_LINE / sizeof(double);
+    return (n + page - 1) / page * page + line;
+}
+
+/* The RK4 block's doubles for n particles (none before the first solver_reserve). */
+static size_t rk_block_doubles(size_t n) { return n ? 2 * RK_MASS * rk_stride(n) : 0; }
 
 _Static_assert(PARTICLE_N_RATED == DIM + 2, "solver_reserve grows the rates du, drho and dm");
 
 /* The RK4 arrays of the masses, at the work arrays' capacity. */
 static int grow_mass_arrays(solver *s, size_t n)
 {
-    if (grow((void **)&s->y0[RK_MASS], n, sizeof(double)) ||
-        grow((void **)&s->sum[RK_MASS], n, sizeof(double)) ||
-        grow((void **)&s->k.dm, n, sizeof(double)))
+    size_t old = s->k.dm ? s->work_capacity : 0;
+    if (grow((void **)&s->y0[RK_MASS], old, n, sizeof(double), ARRAY_Y0_M) ||
+        grow((void **)&s->sum[RK_MASS], old, n, sizeof(double), ARRAY_SUM_M) ||
+        grow((void **)&s->k.dm, old, n, sizeof(double), ARRAY_RATE_M))
         return -1;
     return 0;
 }
@@ -68,8 +92,9 @@ static int grow_rates(solver *s, size_t n)
 {
     if (n <= s->rate_capacity) return 0;
     for (int d = 0; d < DIM; d++)
-        if (grow((void **)&s->k.du[d], n, sizeof(double))) return -1;
-    if (grow((void **)&s->k.drho, n, sizeof(double))) return -1;
+        if (grow((void **)&s->k.du[d], s->rate_capacity, n, sizeof(double), ARRAY_RATE_U + d))
+            return -1;
+    if (grow((void **)&s->k.drho, s->rate_capacity, n, sizeof(double), ARRAY_RATE_RHO)) return -1;
     s->rate_capacity = n;
     return 0;
 }
@@ -88,17 +113,18 @@ int solver_reserve(solver *s, size_t n_fluid)
     size_t n = n_fluid ? n_fluid : 1;
     if (n <= s->work_capacity) return 0;
     /* nothing in the block outlives a step (solver_advance writes it before reading it) */
-    free(s->rk_block);
-    s->rk_block = malloc(2 * RK_MASS * n * sizeof(double));
-    if (!s->rk_block) return -1;
+    size_t stride = rk_stride(n);
+    if (grow((void **)&s->rk_block, rk_block_doubles(s->work_capacity), rk_block_doubles(n),
+             sizeof(double), ARRAY_RK_BLOCK))
+        return -1;
     for (int v = 0; v < RK_MASS; v++) {
-        s->y0[v] = s->rk_block + (size_t)v * n;
-        s->sum[v] = s->rk_block + (size_t)(RK_MASS + v) * n;
+        s->y0[v] = s->rk_block + (size_t)v * stride;
+        s->sum[v] = s->rk_block + (size_t)(RK_MASS + v) * stride;
     }
     s->order = (uint32_t *)s->rk_block; /* the sort by cell, before a step */
     if (grow_rates(s, n)) return -1;
     if (s->k.dm && grow_mass_arrays(s, n)) return -1;
-    if (grow((void **)&s->scratch, n, sizeof(double))) return -1;
+    if (grow((void **)&s->scratch, s->work_capacity, n, sizeof(double), ARRAY_SCRATCH)) return -1;
     s->work_capacity = n;
     return 0;
 }
@@ -140,14 +166,14 @@ int solver_init_part(solver *s, const config *cfg, int part, int parts, char *er
 
 void solver_free(solver *s)
 {
-    free(s->rk_block);
-    free(s->y0[RK_MASS]);
-    free(s->sum[RK_MASS]);
-#define FREE_RATE_SCALAR(name) free(s->k.d##name);
-#define FREE_RATE_VECTOR(name)                                                                     \
-    for (int d = 0; d < DIM; d++) free(s->k.d##name[d]);
-    PARTICLE_RATED(FREE_RATE_SCALAR, FREE_RATE_VECTOR)
-    free(s->scratch);
+    size_t work = s->work_capacity * sizeof(double), rates = s->rate_capacity * sizeof(double);
+    array_free(s->rk_block, rk_block_doubles(s->work_capacity) * sizeof(double), ARRAY_RK_BLOCK);
+    array_free(s->y0[RK_MASS], work, ARRAY_Y0_M);
+    array_free(s->sum[RK_MASS], work, ARRAY_SUM_M);
+    for (int d = 0; d < DIM; d++) array_free(s->k.du[d], rates, ARRAY_RATE_U + d);
+    array_free(s->k.drho, rates, ARRAY_RATE_RHO);
+    array_free(s->k.dm, work, ARRAY_RATE_M);
+    array_free(s->scratch, work, ARRAY_SCRATCH);
     surface_tension_free(&s->st_work);
     bodies_free(&s->bodies);
     volume_correction_free(&s->vc_work);
