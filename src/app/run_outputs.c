@@ -343,8 +343,8 @@ void run_write_series_row(run *r, int with_geometry)
 
 /* The snapshot type of a field of the registry. */
 #define SNAPSHOT_TYPE(type)                                                                        \
-    _Generic((type *)0, double *: FIELD_DOUBLE, float *: FIELD_FLOAT, int64_t *: FIELD_INT64, int32_t *: FIELD_INT32,    \
-             uint8_t *: FIELD_UINT8)
+    _Generic((type *)0, double *: FIELD_DOUBLE, float *: FIELD_FLOAT, int64_t *: FIELD_INT64,      \
+             int32_t *: FIELD_INT32, uint8_t *: FIELD_UINT8)
 
 /* At most every field of the registry. */
 #define COUNT_FIELD(type, name, flags, snapshot, comment) +1
