@@ -68,23 +68,19 @@ PAIR_BLOCK_INLINE void pair_block_at(const pair_row *rw, int32_t n0, pair_block_
         if (pair_block_at(rw, b##_n0, &(b)), 0) {                                                  \
         } else
 
-/* a[j[0]], ..., a[j[PAIR_BLOCK - 1]], element by element into the register: through memory,
- * the block's load would wait for eight stores (no store forwarding) */
-PAIR_BLOCK_INLINE pair_block pair_block_gather_double(const double *a, const int32_t *j)
-{
-    pair_block r;
-    for (int l = 0; l < PAIR_BLOCK; l++) r[l] = a[j[l]];
-    return r;
-}
-
-/* the same of a single-precision field (core/particles.h: frozen_real), widened to double */
-PAIR_BLOCK_INLINE pair_block pair_block_gather_float(const float *a, const int32_t *j)
-{
-    pair_block r;
-    for (int l = 0; l < PAIR_BLOCK; l++) r[l] = a[j[l]];
-    return r;
-}
-
+/* pair_block_gather(a, j): a[j[0]], ..., a[j[PAIR_BLOCK - 1]], element by element into the
+ * register (through memory, the block's load would wait for eight stores: no store
+ * forwarding), for the store's double and single-precision fields alike (core/particles.h:
+ * frozen_real), each element widened to double. */
+#define PAIR_BLOCK_GATHER(type)                                                                    \
+    PAIR_BLOCK_INLINE pair_block pair_block_gather_##type(const type *a, const int32_t *j)         \
+    {                                                                                              \
+        pair_block r;                                                                              \
+        for (int l = 0; l < PAIR_BLOCK; l++) r[l] = a[j[l]];                                       \
+        return r;                                                                                  \
+    }
+PAIR_BLOCK_GATHER(double)
+PAIR_BLOCK_GATHER(float)
 #define pair_block_gather(a, j)                                                                    \
     _Generic((a)[0], float : pair_block_gather_float, default : pair_block_gather_double)(a, j)
 
