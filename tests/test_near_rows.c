@@ -45,7 +45,12 @@ static void run_passes(solver *s, const neighbour_list *nl, double *out)
     fields_shifting_and_correction(&s->pp, p, nl, true, true, &diffusion, DIFFUSION_ROWS_OFF_WALLS);
     fields_frozen_terms(&s->pp, p, nl, &frame, &diffusion, DIFFUSION_ROWS_AT_WALLS);
     double *next = out;
-#define COPY_SCALAR(name) memcpy(next, p->name, n * sizeof(double)), next += n;
+/* element by element: some fields are single precision (core/particles.h: frozen_real) */
+#define COPY_SCALAR(name)                                                                          \
+    {                                                                                              \
+        for (size_t i = 0; i < n; i++) next[i] = p->name[i];                                       \
+        next += n;                                                                                 \
+    }
 #define COPY_VECTOR(name)                                                                          \
     for (int d = 0; d < DIM; d++) COPY_SCALAR(name[d])
     PASS_FIELDS(COPY_SCALAR, COPY_VECTOR)

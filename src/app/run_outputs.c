@@ -49,6 +49,17 @@ static bool gathered(const run *r, uint64_t flags, const char *snapshot, run_gat
     return snapshot && (r->s.pp.surface_tension || !(flags & FIELD_SURFACE_TENSION));
 }
 
+/* Every process's n elements of component d of field `field`, on the process that writes, in
+ * the store's layout (NULL on the others). */
+static void *gathered_field(const run_team *t, int field, int d, const void *mine, size_t n,
+                            size_t size, size_t *n_total)
+{
+    void *all = t->gather(t, mine, n, size, n_total);
+    void *copy = particles_field_copy(field, d, all, *n_total, size);
+    free(all);
+    return copy;
+}
+
 void run_gather(const run *r, const particles *p, run_gather_kind which, particles *whole)
 {
     const run_team *t = r->team;
@@ -58,13 +69,17 @@ void run_gather(const run *r, const particles *p, run_gather_kind which, particl
     }
     memset(whole, 0, sizeof *whole);
     size_t n = 0;
+    /* each gathered array copied into the store's layout (particles_field_copy), which
+       run_gathered_free and rebuild_whole's particles_reserve expect of every array */
 #define GATHER_SCALAR(type, name, flags, snapshot, comment)                                        \
     if (gathered(r, flags, snapshot, which))                                                       \
-        whole->name = t->gather(t, p->name, p->n_fluid, sizeof *p->name, &n);
+        whole->name =                                                                              \
+            gathered_field(t, FIELD_BIT_##name, 0, p->name, p->n_fluid, sizeof *p->name, &n);
 #define GATHER_VECTOR(type, name, flags, snapshot, comment)                                        \
     if (gathered(r, flags, snapshot, which))                                                       \
         for (int d = 0; d < DIM; d++)                                                              \
-            whole->name[d] = t->gather(t, p->name[d], p->n_fluid, sizeof *p->name[d], &n);
+            whole->name[d] = gathered_field(t, FIELD_BIT_##name, d, p->name[d], p->n_fluid,        \
+                                            sizeof *p->name[d], &n);
     PARTICLE_FIELDS(GATHER_SCALAR, GATHER_VECTOR)
     whole->n_fluid = whole->n_total = whole->capacity = whole->sources_capacity = n;
 }

@@ -14,7 +14,7 @@ static int grow(void **ptr, size_t old, size_t count, size_t size, int array)
 }
 
 /* The array number (core/arrays.h) of component d of a field (d = 0: a scalar). */
-#define FIELD_ARRAY(name, d) ((int)FIELD_BIT_##name * DIM + (d))
+#define FIELD_ARRAY(name, d) ((int)FIELD_BIT_##name * DIM + (d)) /* as particles_field_copy's */
 
 /* The fields' room classes: the whole store, the fluid and halo (FIELD_SOURCES_ONLY), the
  * tail's ghosts (FIELD_GHOSTS_ONLY). */
@@ -34,6 +34,14 @@ static int grow_fields(particles *p, unsigned room, size_t old, size_t capacity)
             return -1;
     PARTICLE_FIELDS(GROW_SCALAR, GROW_VECTOR)
     return 0;
+}
+
+void *particles_field_copy(int field, int d, const void *from, size_t n, size_t size)
+{
+    void *a = NULL;
+    if (!from || array_grow(&a, 0, 0, n * size, field * DIM + d)) return NULL;
+    memcpy(a, from, n * size);
+    return a;
 }
 
 /* At least `capacity`, and at least particles_grown of `old` when it grows. */

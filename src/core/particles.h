@@ -229,6 +229,7 @@ static inline int particle_is_wall_image(const particles *p, size_t j)
 #define particles_bytes_sources_only DIM_NAME(particles_bytes_sources_only)
 #define particles_permute_fluid      DIM_NAME(particles_permute_fluid)
 #define particles_bytes_per_slot     DIM_NAME(particles_bytes_per_slot)
+#define particles_field_copy         DIM_NAME(particles_field_copy)
 
 /* Allocates room for `capacity` particles (fluid + ghosts); all counts 0. Returns 0 or -1. */
 int particles_init(particles *p, size_t capacity);
@@ -245,6 +246,10 @@ static inline size_t particles_grown(size_t capacity) { return capacity + capaci
 /* Grows the store to hold at least `capacity` particles, fluid, halo or wall images, and at
  * least particles_grown of what it held, keeping the contents. */
 int particles_reserve(particles *p, size_t capacity);
+/* A copy of the n elements of `size` bytes at `from` laid out as the store lays out component
+ * d of the field of bit `field` (FIELD_BIT_*; core/arrays.h): an array that particles_free and
+ * particles_reserve can take, in a store of capacity n. NULL when `from` is, or out of memory. */
+void *particles_field_copy(int field, int d, const void *from, size_t n, size_t size);
 /* particles_reserve for slots that only wall images will take (from particles_images_begin
  * on): the FIELD_SOURCES_ONLY fields keep their room. */
 int particles_reserve_images(particles *p, size_t capacity);
