@@ -57,34 +57,22 @@ static inline double vec_dot(vec a, vec b)
 static inline double vec_norm2(vec a) { return vec_dot(a, a); }
 static inline double vec_norm(vec a) { return sqrt(vec_dot(a, a)); }
 
-/* Reads component arrays x[0..DIM) at index i (SoA -> value). */
-static inline vec vec_load_double(double *const x[DIM], size_t i)
-{
-    vec v;
-    for (int d = 0; d < DIM; d++) v.c[d] = x[d][i];
-    return v;
-}
-
-static inline vec vec_load_float(float *const x[DIM], size_t i)
-{
-    vec v;
-    for (int d = 0; d < DIM; d++) v.c[d] = x[d][i];
-    return v;
-}
-
-static inline void vec_store_double(double *const x[DIM], size_t i, vec v)
-{
-    for (int d = 0; d < DIM; d++) x[d][i] = v.c[d];
-}
-
-/* each component rounded to the nearest float */
-static inline void vec_store_float(float *const x[DIM], size_t i, vec v)
-{
-    for (int d = 0; d < DIM; d++) x[d][i] = (float)v.c[d];
-}
-
-/* vec_load and vec_store for the store's double and single-precision fields alike
- * (core/particles.h: frozen_real) */
+/* vec_load(x, i) reads component arrays x[0..DIM) at index i (SoA -> value), vec_store(x, i, v)
+ * writes them, for the store's double and single-precision fields alike (core/particles.h:
+ * frozen_real; a float component is v's rounded to the nearest float). */
+#define VEC_ACCESSORS(type)                                                                        \
+    static inline vec vec_load_##type(type *const x[DIM], size_t i)                                \
+    {                                                                                              \
+        vec v;                                                                                     \
+        for (int d = 0; d < DIM; d++) v.c[d] = x[d][i];                                            \
+        return v;                                                                                  \
+    }                                                                                              \
+    static inline void vec_store_##type(type *const x[DIM], size_t i, vec v)                       \
+    {                                                                                              \
+        for (int d = 0; d < DIM; d++) x[d][i] = (type)v.c[d];                                      \
+    }
+VEC_ACCESSORS(double)
+VEC_ACCESSORS(float)
 #define vec_load(x, i) _Generic((x)[0], float * : vec_load_float, default : vec_load_double)(x, i)
 #define vec_store(x, i, v)                                                                         \
     _Generic((x)[0], float * : vec_store_float, default : vec_store_double)(x, i, v)
