@@ -6,7 +6,7 @@ JOBS ?= $(shell nproc)
 CASE ?= cases/default.ini
 RUN_DIR ?= out/default
 
-.PHONY: all deps build run test sanitize test-mpi bench clean
+.PHONY: all deps build run test test-long sanitize test-mpi bench clean
 
 all: build
 
@@ -26,9 +26,15 @@ run: deps
 	$(BUILD)/vcsph plot $(RUN_DIR)
 	@echo "vcsph: output in $(RUN_DIR) (open $(RUN_DIR)/snapshots.xmf in ParaView; plots in $(RUN_DIR)/images)"
 
+# The tests a newcomer runs (under 5 minutes on 2 idle cores), less the long physics runs
+# (labels `long` and `slow`, tests/CMakeLists.txt), which `make test-long` runs and CI too.
 test: deps
 	@$(MAKE) --no-print-directory build
-	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
+	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS) -LE 'long|slow'
+
+test-long: deps
+	@$(MAKE) --no-print-directory build
+	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS) -L 'long|slow'
 
 # The same tests under AddressSanitizer + UndefinedBehaviorSanitizer, warnings as errors
 # (optimised, so that the integration runs take seconds, not minutes), less the long physics

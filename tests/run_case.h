@@ -42,7 +42,7 @@ static inline void run_case_folder(char dir[64])
 static inline void run_case_config(const config *cfg, char dir[64], table *t)
 {
     run_case_folder(dir);
-    run_options opt = {dir, true, false, NULL};
+    run_options opt = {dir, true, false, NULL, "vcsph"};
     assert_int_equal(simulation_run(cfg, &opt), RUN_OK);
     char path[128];
     snprintf(path, sizeof path, "%s/timeseries.csv", dir);

@@ -67,7 +67,7 @@ static void test_every_case_checks_and_runs(void **state)
         char err[1024];
         if (config_load(&cfg, path, tiny, 2, err, sizeof err)) fail_msg("%s", err);
         run_case_folder(dir);
-        run_options opt = {dir, true, false, NULL};
+        run_options opt = {dir, true, false, NULL, "vcsph"};
         int status = simulation_run(&cfg, &opt);
         printf("%-16s %dD: checked, 0.05 s at N = 8: exit %d (%s)\n", names[k], cfg.dim, status,
                dir);

@@ -419,29 +419,40 @@ static void test_table_roll_follows_the_harmonic_roll(void **state)
     motion_free(&roll);
 }
 
-/* A header that names t,x,y reads as the positional t,x,y of before: the same accelerations
- * bit for bit; a roll column turns the tank; pitch in 2D is refused. */
+/* A header that names t,x,y and a table without a header (a first row of numbers, t,x,y by
+ * position) read the same rows: the same accelerations bit for bit, the first row kept; a roll
+ * column turns the tank; pitch in 2D is refused. */
 static void test_named_columns(void **state)
 {
     (void)state;
     const char rows[] = "0,0,0\n0.5,0.01,0.002\n1,0.03,-0.001\n1.5,0.02,0\n2,0,0.001\n";
-    char named[256], positional[256], err[512];
+    char named[256], err[512];
     snprintf(named, sizeof named, "t,x,y\n%s", rows);
-    snprintf(positional, sizeof positional, "time (s),x (m),y (m)\n%s", rows);
     motion a, b;
     assert_int_equal(motion_from_table(&a, named, 2, err, sizeof err), 0);
-    assert_int_equal(motion_from_table(&b, positional, 2, err, sizeof err), 0);
+    assert_int_equal(motion_from_table(&b, rows, 2, err, sizeof err), 0);
+    assert_false(a.table_by_position);
+    assert_true(b.table_by_position);
+    assert_int_equal(b.n_knots, 5);
+    assert_true(b.t[0] == 0.0);
     for (int k = 0; k <= 40; k++) {
         tank_frame fa = motion_frame(&a, G, 0.05 * k), fb = motion_frame(&b, G, 0.05 * k);
         assert_memory_equal(&fa, &fb, sizeof fa);
     }
     assert_false(a.rotates);
+    char columns[64];
+    motion_table_columns(&b, columns, sizeof columns);
+    assert_string_equal(columns, "t,x,y");
     motion_free(&a);
     motion_free(&b);
     motion r;
     assert_int_equal(
-        motion_from_table(&r, "t, roll\n0,0\n1,0.1\n2,0\n3,-0.1\n", 2, err, sizeof err), 0);
+        motion_from_table(&r, "# a comment\n\nt, roll\n0,0\n1,0.1\n2,0\n3,-0.1\n", 2, err,
+                          sizeof err),
+        0);
     assert_true(r.rotates && r.pos[MOTION_X] == NULL);
+    motion_table_columns(&r, columns, sizeof columns);
+    assert_string_equal(columns, "t,roll");
     motion_free(&r);
     assert_int_equal(motion_from_table(&r, "t,x,y,pitch\n0,0,0,0\n1,0,0,0\n2,0,0,0\n3,0,0,0\n", 2,
                                        err, sizeof err),
@@ -449,7 +460,42 @@ static void test_named_columns(void **state)
     assert_non_null(strstr(err, "3D only"));
     assert_int_equal(motion_from_table(&r, "t,roll\n0,0\n1,0.1,2\n2,0\n3,0\n", 2, err, sizeof err),
                      2);
-    assert_non_null(strstr(err, ":3: expected 2 numbers t,roll"));
+    assert_non_null(strstr(err, ":3: expected 2 decimal numbers t,roll"));
+}
+
+/* Every header word is a column, spelled as documented: a misspelt, capitalised or unknown
+ * word, t not first, a column twice, a header of other words are refused with the file's
+ * line, the word and, for a near miss, the column meant; so is a row with a hex number or a
+ * first row of numbers that is neither t,x,y nor t,x,y,z. */
+static void test_table_header_refused(void **state)
+{
+    (void)state;
+    static const struct {
+        const char *table, *expected;
+    } bad[] = {
+        {"t,x,rol\n", ":1: motion table header: 'rol' is not a column (did you mean 'roll'?)"},
+        {"t,x,Roll\n", "'Roll' is not a column (did you mean 'roll'?)"},
+        {"t,x,foo\n", "'foo' is not a column; the columns are t, then any of x, y, z"},
+        {"time (s),x (m),y (m)\n", "'time (s)' is not a column"},
+        {"x,t,y\n", "'x' comes before t; t must be the first column"},
+        {"t,x,x\n", "'x' comes twice"},
+        {"t,x,t\n", "'t' comes twice"},
+        {"t\n", "names t alone"},
+        {"# notes\n\nT,x\n", ":3: motion table header: 'T' is not a column (did you mean 't'?)"},
+        {"t,x\n0,0\n0x1p-2,0\n", ":3: expected 2 decimal numbers t,x"},
+        {"0,1\n1,2\n2,3\n3,4\n", ":1: a motion table without a header has t,x,y or t,x,y,z"},
+        {"0,0,0\n1,0,0,0\n", ":2: expected 3 decimal numbers t,x,y (s, m, rad), as the first row"},
+    };
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        char table[256], err[512] = "";
+        snprintf(table, sizeof table, "%s0,0,0\n1,0,0\n2,0,0\n3,0,0\n", bad[i].table);
+        motion mo;
+        int status = motion_from_table(&mo, table, 2, err, sizeof err);
+        if (status == 0) motion_free(&mo);
+        if (status != 2 || !strstr(err, bad[i].expected))
+            fail_msg("table \"%s\": status %d, message \"%s\", expected \"%s\"", bad[i].table,
+                     status, err, bad[i].expected);
+    }
 }
 
 /* ---- g_max ---------------------------------------------------------------------------------- */
@@ -498,6 +544,7 @@ int main(void)
         cmocka_unit_test(test_sway_roll_frame),
         cmocka_unit_test_setup_teardown(test_orientation_rates, table_setup, table_teardown),
         cmocka_unit_test_setup_teardown(test_named_columns, table_setup, table_teardown),
+        cmocka_unit_test_setup_teardown(test_table_header_refused, table_setup, table_teardown),
         cmocka_unit_test_setup_teardown(test_table_roll_follows_the_harmonic_roll, table_setup,
                                         table_teardown),
     };

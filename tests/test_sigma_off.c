@@ -50,7 +50,7 @@ static char *final_state(const char *case_file, const char *const *overrides, in
     char err[1024], dir[64];
     if (config_load(&cfg, case_file, overrides, n_overrides, err, sizeof err)) fail_msg("%s", err);
     run_case_folder(dir);
-    run_options opt = {dir, true, false, NULL};
+    run_options opt = {dir, true, false, NULL, "vcsph"};
     assert_int_equal(simulation_run(&cfg, &opt), RUN_OK);
     char path[128];
     snprintf(path, sizeof path, "%s/snapshots/000001.h5", dir);

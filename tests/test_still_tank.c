@@ -51,7 +51,7 @@ static int run_text(const char *text, const char *dir, int threads)
     }
     snprintf(cfg.output_dir, sizeof cfg.output_dir, "%s", dir);
     omp_set_num_threads(threads);
-    run_options opt = {cfg.output_dir, true, false, NULL};
+    run_options opt = {cfg.output_dir, true, false, NULL, "vcsph"};
     return simulation_run(&cfg, &opt);
 }
 

@@ -7,10 +7,11 @@
 
 void cli_usage(FILE *out)
 {
-    fputs("usage: vcsph run CASE [--set section.key=value]... [-o DIR] [--overwrite] [--quiet]\n"
+    fputs("usage: vcsph run CASE [--set section.key=value]... [-o DIR] [--overwrite] [--insist]\n"
+          "                 [--quiet]\n"
           "       vcsph run --restart OUTDIR/checkpoint.h5 [--set case.t_end=T]\n"
           "                 [--set output.KEY=VALUE]... [--quiet]\n"
-          "       vcsph check [--print] CASE [--set section.key=value]... [-o DIR]\n"
+          "       vcsph check [--print] CASE [--set section.key=value]... [-o DIR] [--insist]\n"
           "       vcsph volume SNAPSHOT...\n"
           "       vcsph plot OUTDIR\n"
           "       vcsph keys\n"
@@ -22,8 +23,8 @@ void cli_usage(FILE *out)
           "          as OUTDIR/case.ini (it loads back to the same case)\n"
           "  volume  print t, eps_v1 (Eq. 12) and eps_gm (Eq. 15) of saved snapshots (CSV)\n"
           "  plot    PNG plots of a run's output directory with gnuplot, into OUTDIR/images\n"
-          "          (volume error and eta, energy, density, liquid, dissipation, probes;\n"
-          "          the script OUTDIR/images/plot.gp can be edited and rerun)\n"
+          "          (volume error and eta, energy, density, liquid, dissipation, probes,\n"
+          "          loads; the script OUTDIR/images/plot.gp can be edited and rerun)\n"
           "  keys    list every key of the case file, one line each, four fields separated\n"
           "          by tabs: section.key, default ('required' if none, '<...>' if computed,\n"
           "          empty if empty), allowed values, meaning (docs/case-file.md)\n"
@@ -37,6 +38,10 @@ void cli_usage(FILE *out)
           "          wall-clock seconds, and when SIGTERM or SIGINT stops a run) in its folder,\n"
           "          as if it had never stopped; only case.t_end and output.* (not output.dir)\n"
           "          may change\n"
+          "  --insist\n"
+          "          run a case that looks absurd all the same: a motion period of fewer than\n"
+          "          20 time steps, or more than a day's estimated run for a tank acceleration\n"
+          "          above 100 g or a sound speed above 100 times Eq. (6)'s (docs/checks.md)\n"
           "  --quiet no terminal output (log.txt is still written)\n"
           "Threads: OMP_NUM_THREADS. Exit status: 0 done, 1 I/O failure, 2 bad input,\n"
           "3 numerical breakdown, 4 stopped by SIGTERM or SIGINT (checkpoint written).\n",
@@ -169,6 +174,9 @@ int cli_parse(int argc, char **argv, cli_args *args, char *err, int err_len)
             args->quiet = true;
         } else if (!strcmp(a, "--overwrite") && args->command == CLI_RUN) {
             args->overwrite = true;
+        } else if (!strcmp(a, "--insist") &&
+                   (args->command == CLI_RUN || args->command == CLI_CHECK)) {
+            args->insist = true;
         } else if (!strcmp(a, "--print")) {
             if (args->command != CLI_CHECK) {
                 snprintf(err, (size_t)err_len, "vcsph: only `vcsph check` takes --print");
@@ -178,7 +186,7 @@ int cli_parse(int argc, char **argv, cli_args *args, char *err, int err_len)
         } else if (a[0] == '-') {
             snprintf(err, (size_t)err_len,
                      "vcsph: unknown option '%s' (allowed: --set, -o, --overwrite, --restart, "
-                     "--quiet, --print)",
+                     "--quiet, --print, --insist)",
                      a);
             return 2;
         } else if (!args->case_path) {

@@ -30,6 +30,7 @@ typedef struct {
     bool quiet;
     bool overwrite; /* run: replace an earlier run's outputs in the folder */
     bool print;     /* check --print: the resolved case instead of the derived numbers */
+    bool insist;    /* run, check: take a case that looks absurd (case_checks.h) */
 } cli_args;
 
 /* Parses argv; returns 0, or 2 with a message in err. */

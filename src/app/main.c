@@ -1,4 +1,5 @@
 /* main: the vcsph command; the only place that decides exit statuses (docs/architecture.md). */
+#include "app/case_checks.h"
 #include "app/cli.h"
 #include "app/plot_command.h"
 #include "core/run_team.h"
@@ -28,43 +29,23 @@ static void warn_stderr(const char *msg, void *ctx)
     fprintf(stderr, "vcsph: warning: %s\n", msg);
 }
 
-/* What a run checks before it starts beyond the case file itself: the motion table, and
- * the derived numbers (derived_check). */
-static int validate_case(const config *cfg, derived *dv)
-{
-    motion mo;
-    char err[1024];
-    if (motion_init(&mo, cfg, err, sizeof err)) {
-        fprintf(stderr, "vcsph: %s\n", err);
-        return RUN_BAD_INPUT;
-    }
-    case_numbers(cfg, &mo, dv);
-    motion_free(&mo);
-    if (derived_check(cfg, dv, err, sizeof err)) {
-        fprintf(stderr, "vcsph: %s\n", err);
-        return RUN_BAD_INPUT;
-    }
-    return RUN_OK;
-}
-
 /* `vcsph check`: the derived numbers, or with --print the resolved case exactly as a run
- * writes it into case.ini (both config_write), printed only for a case that would run. */
-static int check_case(const config *cfg, bool print)
+ * writes it into case.ini (both config_write), printed only for a case that would run (the
+ * load's case_runnable has passed). */
+static int check_case(const config *cfg, const case_check_state *state, bool print)
 {
-    derived dv;
-    int status = validate_case(cfg, &dv);
-    if (status != RUN_OK) return status;
-    derived_warnings(cfg, &dv, warn_stderr, NULL);
+    derived_warnings(cfg, &state->dv, warn_stderr, NULL);
+    char msg[1024];
+    estimate_cost_warning(&state->est, msg, sizeof msg);
+    if (msg[0]) warn_stderr(msg, NULL);
     if (print) {
         config_write(cfg, stdout);
         return RUN_OK;
     }
     printf("%s: valid\n", cfg->name);
-    derived_print(cfg, &dv, stdout);
-    run_estimate est;
+    derived_print(cfg, &state->dv, stdout);
     char memory[256], wall[256];
-    estimate_run(cfg, &dv, omp_get_max_threads(), &est);
-    estimate_describe(&est, memory, sizeof memory, wall, sizeof wall);
+    estimate_describe(&state->est, memory, sizeof memory, wall, sizeof wall);
     printf("memory estimate  %s\n", memory);
     printf("wall time est.   %s\n", wall);
     return RUN_OK;
@@ -73,8 +54,6 @@ static int check_case(const config *cfg, bool print)
 /* `vcsph volume`: one CSV row per snapshot, the columns of timeseries.csv. */
 static int volume_of_snapshots(char **paths, int n)
 {
-    printf("t,eps_v1,eps_gm,n_free_surface,n_clumped,nearest_free,nearest_band,"
-           "nearest_interior,eps_fs\n");
     for (int k = 0; k < n; k++) {
         char err[2048];
         snapshot_info info;
@@ -84,10 +63,10 @@ static int volume_of_snapshots(char **paths, int n)
         }
         /* the tank motion does not enter the geometry: drop it, so that a motion table
            need not be found again */
-        const char *no_motion = "motion.type=none";
+        const char *const no_motion[] = {"motion.type=none", "motion.file="};
         static config cfg;
         int status =
-            config_load_string(&cfg, info.case_text, paths[k], &no_motion, 1, err, sizeof err);
+            config_load_string(&cfg, info.case_text, paths[k], no_motion, 2, err, sizeof err);
         snapshot_figures f;
         if (status == 0)
             status = (info.dim == 3 ? snapshot_volume_3d : snapshot_volume_2d)(
@@ -98,6 +77,9 @@ static int volume_of_snapshots(char **paths, int n)
             fprintf(stderr, "vcsph: %s\n", err);
             return status;
         }
+        if (k == 0) /* after the first file reads, so that an error comes alone */
+            printf("t,eps_v1,eps_gm,n_free_surface,n_clumped,nearest_free,nearest_band,"
+                   "nearest_interior,eps_fs\n");
         const surface_packing *q = &f.packing;
         printf("%.10g,%.10g,%.10g,%ld,%ld,%.4f,%.4f,%.4f,%.10g\n", time, f.eps_v1, f.eps_gm,
                q->n_free, q->n_clumped, q->nearest_free, q->nearest_band, q->nearest_interior,
@@ -161,7 +143,7 @@ static int checkpoint_case(const checkpoint_data *cd, const cli_args *args, conf
 
 /* `vcsph run --restart`: the whole checkpoint is read and verified before anything else
  * (by every process of a team). */
-static int restart_run(const cli_args *args, const run_team *team)
+static int restart_run(const cli_args *args, const run_team *team, const char *program)
 {
     checkpoint_data cd;
     char err[2048];
@@ -174,7 +156,7 @@ static int restart_run(const cli_args *args, const run_team *team)
     if (status == RUN_OK) {
         char dir[CONFIG_PATH_MAX];
         folder_of(args->restart_path, dir, sizeof dir);
-        run_options opt = {dir, args->quiet, false, team};
+        run_options opt = {dir, args->quiet, false, team, program};
         status = simulation_resume(&cfg, &opt, &cd);
     }
     checkpoint_data_free(&cd);
@@ -238,16 +220,19 @@ static int vcsph_main(int argc, char **argv, const run_team *team)
         return RUN_OK;
     }
     if (args.command == CLI_RUN && !team && refuse_mpi_launch()) return RUN_BAD_INPUT;
-    if (args.restart_path) return restart_run(&args, team);
+    if (args.restart_path) return restart_run(&args, team, argv[0]);
     static config cfg;
-    if (config_load(&cfg, args.case_path, args.overrides, args.n_overrides, err, sizeof err)) {
+    static case_check_state state;
+    state.insist = args.insist;
+    if (config_load_checked(&cfg, args.case_path, args.overrides, args.n_overrides, case_runnable,
+                            &state, err, sizeof err)) {
         fprintf(stderr, "vcsph: %s\n", err);
         return RUN_BAD_INPUT;
     }
     /* before check, so that check --print shows the case.ini that run -o DIR writes */
     if (args.output_dir) snprintf(cfg.output_dir, sizeof cfg.output_dir, "%s", args.output_dir);
-    if (args.command == CLI_CHECK) return check_case(&cfg, args.print);
-    run_options opt = {cfg.output_dir, args.quiet, args.overwrite, team};
+    if (args.command == CLI_CHECK) return check_case(&cfg, &state, args.print);
+    run_options opt = {cfg.output_dir, args.quiet, args.overwrite, team, argv[0]};
     return simulation_run(&cfg, &opt);
 }
 

@@ -8,29 +8,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-char *motion_table_read(const char *path, char *err, size_t err_len)
-{
-    FILE *f = fopen(path, "rb");
-    char *text = NULL;
-    size_t len = 0;
-    FILE *out = f ? open_memstream(&text, &len) : NULL;
-    if (!out) {
-        snprintf(err, err_len, "%s: cannot read the motion table: %s", path, strerror(errno));
-        if (f) fclose(f);
-        return NULL;
-    }
-    char buf[65536];
-    for (size_t n; (n = fread(buf, 1, sizeof buf, f)) > 0;) fwrite(buf, 1, n, out);
-    int failed = ferror(f);
-    fclose(f);
-    if (fclose(out) || failed) {
-        snprintf(err, err_len, "%s: cannot read the motion table", path);
-        free(text);
-        return NULL;
-    }
-    return text;
-}
-
 int motion_table_store(const char *dir, const char *text, char *copy_path, size_t copy_size,
                        char *err, size_t err_len)
 {

@@ -9,9 +9,6 @@
 
 #define MOTION_TABLE_COPY "motion_table.csv"
 
-/* The whole file as a NUL-terminated text (free() it), or NULL with a message in err. */
-char *motion_table_read(const char *path, char *err, size_t err_len);
-
 /* Writes text as dir/motion_table.csv (whole or not at all) and puts the copy's absolute path
  * in copy_path, for case.ini. Returns 0, or -1 with a message in err. */
 int motion_table_store(const char *dir, const char *text, char *copy_path, size_t copy_size,

@@ -73,8 +73,8 @@ static void plot_read_case(const char *dir, plot_inputs *in, plot_report *report
     if (path_join(path, sizeof path, dir, "case.ini", err, sizeof err)) return;
     if (access(path, F_OK)) return;
     /* the tank motion is not plotted: dropping it spares looking for a motion table */
-    const char *no_motion = "motion.type=none";
-    if (config_load(&in->cfg, path, &no_motion, 1, err, sizeof err)) {
+    const char *const no_motion[] = {"motion.type=none", "motion.file="};
+    if (config_load(&in->cfg, path, no_motion, 2, err, sizeof err)) {
         snprintf(report->warning, sizeof report->warning,
                  "vcsph plot: plotting without the case: %s", err);
         return;

@@ -13,6 +13,7 @@
 #include "core/version.h"
 #include "diag/energy.h"
 #include "io/csv.h"
+#include "io/text_file.h"
 #include "scheme/solver.h"
 
 #include <errno.h>
@@ -185,12 +186,14 @@ static int finish_step(run *r)
 }
 
 /* The command that continues this run: the same processes' (any number of them would do). */
+/* The command that continues this run, as the user started it (argv[0]), so that it pastes. */
 static void run_command(const run *r, char *buf, size_t len)
 {
+    const char *program = r->opt->program ? r->opt->program : "vcsph";
     if (r->team)
-        snprintf(buf, len, "mpirun -n %d vcsph-mpi run", r->team->size);
+        snprintf(buf, len, "mpirun -n %d %s run", r->team->size, program);
     else
-        snprintf(buf, len, "vcsph run");
+        snprintf(buf, len, "%s run", program);
 }
 
 static const char *signal_name(int sig)
@@ -227,7 +230,7 @@ static int checkpoint_due(run *r)
     }
     if (!sig) return RUN_OK;
     progress_clear(&r->pr);
-    char command[64];
+    char command[CONFIG_PATH_MAX + 64];
     run_command(r, command, sizeof command);
     log_info("vcsph: stopped by %s at t = %.9g s, step %ld; state saved in %s; continue with: "
              "%s --restart %s",
@@ -307,11 +310,18 @@ static void log_start(const run *r)
     }
     estimate_describe(&est, memory, sizeof memory, wall, sizeof wall);
     log_info("vcsph: memory estimate %s; wall time estimate %s", memory, wall);
-    if (r->s.mo.kind == MOTION_TABLE) /* theory §6: say once how the table was read */
-        log_info("vcsph: motion table %s: %zu rows, t in [%g, %g] s, accelerations from a "
-                 "natural cubic spline (zero outside the table), largest |g - a_tank| = %.4g m/s^2",
-                 cfg->motion_file, r->s.mo.n_knots, r->s.mo.t[0], r->s.mo.t[r->s.mo.n_knots - 1],
-                 dv->g_max);
+    estimate_cost_warning(&est, wall, sizeof wall);
+    if (wall[0]) log_warning(wall, NULL);
+    if (r->s.mo.kind == MOTION_TABLE) { /* theory §6: say once how the table was read */
+        char columns[64];
+        motion_table_columns(&r->s.mo, columns, sizeof columns);
+        log_info("vcsph: motion table %s: columns %s (%s), %zu rows, t in [%g, %g] s, "
+                 "accelerations from a natural cubic spline (zero outside the table), largest "
+                 "|g - a_tank| = %.4g m/s^2",
+                 cfg->motion_file, columns,
+                 r->s.mo.table_by_position ? "no header: by position" : "named by its header",
+                 r->s.mo.n_knots, r->s.mo.t[0], r->s.mo.t[r->s.mo.n_knots - 1], dv->g_max);
+    }
     if (r->resumed)
         log_info("vcsph: restarted from the checkpoint at t = %.9g s, step %ld", r->s.t, r->s.step);
     log_info("vcsph: output in %s", r->opt->output_dir);
@@ -426,7 +436,7 @@ static char *motion_table_text(const config *cfg, const checkpoint_data *cd, cha
 {
     err[0] = '\0';
     if (cfg->motion != MOTION_TABLE) return NULL;
-    if (!cd) return motion_table_read(cfg->motion_file, err, err_len);
+    if (!cd) return text_file_read(cfg->motion_file, "motion table", err, err_len);
     char *text = checkpoint_text(cd, "motion_table", err, err_len);
     if (!text)
         snprintf(err, err_len,
@@ -451,6 +461,44 @@ static int claim_files(run *r, config *cfg, const checkpoint_data *cd, char *err
     return status;
 }
 
+/* Whether OUTDIR/case.ini differs from the case the checkpoint holds (edited since the run
+ * wrote it): a restart runs the checkpoint's case and rewrites case.ini with it. */
+static bool case_edited(const run *r, const checkpoint_data *cd)
+{
+    char err[CONFIG_PATH_MAX + 256], path[CONFIG_PATH_MAX + 64];
+    run_out_path(r, path, sizeof path, "case.ini");
+    char *stored = checkpoint_text(cd, "case", err, sizeof err);
+    char *on_disk = text_file_read(path, "case", err, sizeof err);
+    bool edited = stored && on_disk && strcmp(stored, on_disk) != 0;
+    free(stored);
+    free(on_disk);
+    return edited;
+}
+
+static void report_edited_case(const run *r)
+{
+    char command[CONFIG_PATH_MAX + 64], path[CONFIG_PATH_MAX + 64];
+    run_command(r, command, sizeof command);
+    run_out_path(r, path, sizeof path, "case.ini");
+    log_error("vcsph: warning: %s had been edited since the run wrote it: a restart runs the case "
+              "its checkpoint holds, changed only by --set case.t_end=... and --set "
+              "output.KEY=..., and has rewritten %s with that case; to run the edit, start a "
+              "new run from an edited copy (%s COPY.ini -o NEWDIR)",
+              path, path, command);
+}
+
+/* A restart of a run that already reached its t_end: nothing to do, and how to extend it. */
+static void report_complete(const run *r)
+{
+    char command[CONFIG_PATH_MAX + 64], checkpoint[CONFIG_PATH_MAX + 64];
+    run_command(r, command, sizeof command);
+    run_out_path(r, checkpoint, sizeof checkpoint, "checkpoint.h5");
+    log_info("vcsph: the run in %s is complete: its checkpoint is at t = %.9g s, step %ld, and "
+             "case.t_end = %g s; nothing to run. Extend it with: %s --restart %s --set "
+             "case.t_end=LATER",
+             r->opt->output_dir, r->s.t, r->s.step, r->cfg->t_end, command, checkpoint);
+}
+
 /* A run from t = 0 (cd NULL) or from a checkpoint, of cfg (the run's own copy: it points
  * motion.file at the folder's copy of the table). With a team, every process runs it and the
  * one that writes holds the folder. */
@@ -472,6 +520,12 @@ static int run_case_with(config *cfg, const run_options *opt, const checkpoint_d
         close_run(&r);
         return status;
     }
+    bool edited = cd && team_writes(team) && case_edited(&r, cd);
+    if (cd && r.s.t >= cfg->t_end) { /* nothing left to run: the folder stays as it is */
+        report_complete(&r);
+        close_run(&r);
+        return RUN_OK;
+    }
     r.case_text = config_text(cfg);
     if (team_agree(team, !r.case_text || (team_writes(team) && run_open_outputs(&r)))) {
         log_error("vcsph: cannot write the outputs in %s: %s", opt->output_dir, strerror(errno));
@@ -479,6 +533,7 @@ static int run_case_with(config *cfg, const run_options *opt, const checkpoint_d
         return RUN_FAILED;
     }
     log_start(&r);
+    if (edited) report_edited_case(&r);
     if (!cd) start_fresh(&r);
     long step0 = r.s.step;
     double wall0 = progress_wall_time();
@@ -493,7 +548,7 @@ static int run_case_with(config *cfg, const run_options *opt, const checkpoint_d
     /* the steps of this invocation: a restarted run counts from its checkpoint */
     double wall = progress_wall_time() - wall0;
     long steps = r.s.step - step0;
-    char command[64];
+    char command[CONFIG_PATH_MAX + 64];
     run_command(&r, command, sizeof command);
     if (status == RUN_OK)
         log_info("vcsph: done: %ld steps in %.1f s (%.3g particle-steps/s); output in %s; "

@@ -1,6 +1,8 @@
 /* motion: sway, heave, roll, pitch, yaw, their decay, phase and duration, and tabulated motion
  * (theory §6). */
 #include "boundary/motion.h"
+#include "core/decimal.h"
+#include "core/suggest.h"
 
 #include <ctype.h>
 #include <errno.h>
@@ -332,52 +334,90 @@ static int spline_second_derivatives(const double *t, const double *y, size_t n,
 }
 
 static const char *const channel_names[MOTION_CHANNELS] = {"x", "y", "z", "roll", "pitch", "yaw"};
+static const char *const column_names[MOTION_CHANNELS + 1] = {"t",    "x",     "y",  "z",
+                                                              "roll", "pitch", "yaw"};
+#define COLUMNS_SPELLED "t, then any of x, y, z (m) and roll, pitch, yaw (rad)"
 
 /* The table's columns: channel[k] is the channel of column k + 1 (column 0 is t). */
 typedef struct {
     int n, channel[MOTION_CHANNELS];
 } table_columns;
 
-/* The header's fields when they are t and then channel names, each at most once; false
- * otherwise (a header of other words: the columns are then t,x,y[,z] by position). */
-static bool named_columns(const char *header, table_columns *cols)
+/* The comma-separated decimal numbers of a line, at most `room`; their count, or -1 when
+ * anything else is on the line (a word, an empty field, more than `room` numbers). */
+static int line_numbers(const char *line, double *v, int room)
+{
+    const char *p = line;
+    for (int k = 0;; k++) {
+        char *end;
+        double x = decimal_strtod(p, &end);
+        if (end == p || !isfinite(x) || k == room) return -1;
+        v[k] = x;
+        p = end;
+        while (isspace((unsigned char)*p)) p++;
+        if (*p == '\0') return k + 1;
+        if (*p++ != ',') return -1;
+    }
+}
+
+/* A header's fields: `t` first, then channel names (exactly as documented, lower case), each
+ * at most once. Returns false with a message naming the line and the word otherwise. */
+static bool header_columns(const char *header, table_columns *cols, const char *path,
+                           size_t lineno, char *err, size_t err_len)
 {
     char text[4096];
     snprintf(text, sizeof text, "%s", header);
     cols->n = -1; /* t first */
     int seen = 0;
-    for (char *save = NULL, *field = strtok_r(text, ",\r\n", &save); field;
-         field = strtok_r(NULL, ",\r\n", &save)) {
+    char *save = NULL;
+    for (char *field = strtok_r(text, ",\r\n", &save); field; field = strtok_r(NULL, ",\r\n", &save)) {
         while (isspace((unsigned char)*field)) field++;
         size_t len = strlen(field);
         while (len > 0 && isspace((unsigned char)field[len - 1])) field[--len] = '\0';
-        if (cols->n < 0) {
-            if (strcmp(field, "t") != 0) return false;
+        int c = 0;
+        while (c <= MOTION_CHANNELS && strcmp(field, column_names[c]) != 0) c++;
+        const char *why = NULL;
+        if (c > MOTION_CHANNELS)
+            why = "is not a column";
+        else if ((cols->n < 0) != (c == 0))
+            why = c == 0 ? "comes twice" : "comes before t; t must be the first column";
+        else if (c > 0 && (seen & (1 << c)))
+            why = "comes twice";
+        if (why) {
+            const char *hint = c > MOTION_CHANNELS
+                                   ? word_suggest(field, column_names, MOTION_CHANNELS + 1)
+                                   : NULL;
+            snprintf(err, err_len, "%s:%zu: motion table header: '%s' %s%s%s%s; the columns are %s",
+                     path, lineno, field, why, hint ? " (did you mean '" : "", hint ? hint : "",
+                     hint ? "'?)" : "", COLUMNS_SPELLED);
+            return false;
+        }
+        if (c == 0) {
             cols->n = 0;
             continue;
         }
-        int c = 0;
-        while (c < MOTION_CHANNELS && strcmp(field, channel_names[c]) != 0) c++;
-        if (c == MOTION_CHANNELS || (seen & (1 << c))) return false; /* so at most 6 */
         seen |= 1 << c;
-        cols->channel[cols->n++] = c;
+        cols->channel[cols->n++] = c - 1;
     }
-    return cols->n > 0;
+    if (cols->n > 0) return true;
+    snprintf(err, err_len, "%s:%zu: motion table header: %s; the columns are %s", path, lineno,
+             cols->n < 0 ? "empty" : "names t alone", COLUMNS_SPELLED);
+    return false;
 }
 
-/* The values of one named row, exactly 1 + cols->n numbers separated by commas. */
-static bool named_row(const char *line, const table_columns *cols, double *v)
+/* A table without a header: a first line of 3 or 4 numbers is t,x,y or t,x,y,z by position. */
+static bool positional_columns(int count, table_columns *cols, const char *path, size_t lineno,
+                               char *err, size_t err_len)
 {
-    const char *p = line;
-    for (int k = 0; k <= cols->n; k++) {
-        char *end;
-        v[k] = strtod(p, &end);
-        if (end == p || !isfinite(v[k])) return false;
-        p = end;
-        while (isspace((unsigned char)*p)) p++;
-        if (k < cols->n && *p++ != ',') return false;
+    if (count == 3 || count == 4) {
+        *cols = (table_columns){count - 1, {MOTION_X, MOTION_Y, MOTION_Z}};
+        return true;
     }
-    return *p == '\0';
+    snprintf(err, err_len,
+             "%s:%zu: a motion table without a header has t,x,y or t,x,y,z by position; this "
+             "first row has %d number(s): give a header (%s)",
+             path, lineno, count, COLUMNS_SPELLED);
+    return false;
 }
 
 static int append_knot(motion *mo, size_t *cap, const table_columns *cols, const double *v)
@@ -401,30 +441,23 @@ static int append_knot(motion *mo, size_t *cap, const table_columns *cols, const
     return 0;
 }
 
-/* One data row into v (t first, then the columns' values): by name, or t,x,y[,z] by position
- * (z is 0 when absent). Returns false with a message when the row does not read. */
-static bool table_row(const char *line, bool named, const table_columns *cols, double *v,
+/* One data row: exactly the columns' numbers. Returns false with a message otherwise. */
+static bool table_row(const char *line, const table_columns *cols, bool by_position, double *v,
                       const char *path, size_t lineno, char *err, size_t err_len)
 {
-    if (named) {
-        if (named_row(line, cols, v)) return true;
-        char spelled[96] = "t";
-        for (int k = 0; k < cols->n; k++)
-            snprintf(spelled + strlen(spelled), sizeof spelled - strlen(spelled), ",%s",
-                     channel_names[cols->channel[k]]);
-        snprintf(err, err_len, "%s:%zu: expected %d numbers %s (s, m, rad), as the header names",
-                 path, lineno, cols->n + 1, spelled);
-        return false;
-    }
-    v[3] = 0.0;
-    if (sscanf(line, "%lf ,%lf ,%lf ,%lf", &v[0], &v[1], &v[2], &v[3]) >= 3) return true;
-    snprintf(err, err_len, "%s:%zu: expected t,x,y[,z] (numbers, m and s)", path, lineno);
+    if (line_numbers(line, v, MOTION_CHANNELS + 1) == cols->n + 1) return true;
+    char spelled[96] = "t";
+    for (int k = 0; k < cols->n; k++)
+        snprintf(spelled + strlen(spelled), sizeof spelled - strlen(spelled), ",%s",
+                 channel_names[cols->channel[k]]);
+    snprintf(err, err_len, "%s:%zu: expected %d decimal numbers %s (s, m, rad), as %s", path,
+             lineno, cols->n + 1, spelled, by_position ? "the first row has" : "the header names");
     return false;
 }
 
-/* CSV whose header names the columns, t then any of x,y,z (m) and roll,pitch,yaw (rad); a
- * header of other words leaves t,x,y[,z] by position. From the text, if given, else from the
- * file `path` (named in the messages either way). */
+/* CSV whose first line (after blank and `#` lines) is a header, t then any of x,y,z (m) and
+ * roll,pitch,yaw (rad), or already a row of 3 or 4 numbers, t,x,y[,z] by position. From the
+ * text, if given, else from the file `path` (named in the messages either way). */
 static int read_table(motion *mo, const char *path, const char *text, int dim, char *err,
                       size_t err_len)
 {
@@ -436,23 +469,29 @@ static int read_table(motion *mo, const char *path, const char *text, int dim, c
     char line[4096];
     size_t cap = 0, lineno = 0;
     int status = 0;
-    bool named = false;
-    table_columns cols = {3, {MOTION_X, MOTION_Y, MOTION_Z}};
+    bool first = true;
+    table_columns cols = {0, {0}};
     while (status == 0 && fgets(line, sizeof line, f)) {
         lineno++;
-        if (lineno == 1) { /* the header */
-            table_columns given;
-            if ((named = named_columns(line, &given))) cols = given;
-            continue;
-        }
-        if (line[0] == '#' || line[0] == '\n') continue;
+        const char *p = line;
+        while (isspace((unsigned char)*p)) p++;
+        if (*p == '#' || *p == '\0') continue;
         double v[MOTION_CHANNELS + 1];
-        if (!table_row(line, named, &cols, v, path, lineno, err, err_len))
+        if (first) {
+            first = false;
+            int count = line_numbers(line, v, MOTION_CHANNELS + 1);
+            mo->table_by_position = count > 0;
+            bool read = count > 0 ? positional_columns(count, &cols, path, lineno, err, err_len)
+                                  : header_columns(line, &cols, path, lineno, err, err_len);
+            if (!read) status = 2;
+            if (count <= 0) continue;
+        }
+        if (status == 0 && !table_row(line, &cols, mo->table_by_position, v, path, lineno, err, err_len))
             status = 2;
-        else if (mo->n_knots > 0 && !(v[0] > mo->t[mo->n_knots - 1])) {
+        else if (status == 0 && mo->n_knots > 0 && !(v[0] > mo->t[mo->n_knots - 1])) {
             snprintf(err, err_len, "%s:%zu: times must increase", path, lineno);
             status = 2;
-        } else if (append_knot(mo, &cap, &cols, v)) {
+        } else if (status == 0 && append_knot(mo, &cap, &cols, v)) {
             snprintf(err, err_len, "%s: out of memory", path);
             status = 2;
         }
@@ -479,6 +518,13 @@ static int read_table(motion *mo, const char *path, const char *text, int dim, c
         if (c >= MOTION_ROLL_ANGLE) mo->rotates = true;
     }
     return status;
+}
+
+void motion_table_columns(const motion *mo, char *buf, size_t size)
+{
+    size_t used = (size_t)snprintf(buf, size, "t");
+    for (int c = 0; c < MOTION_CHANNELS && used < size; c++)
+        if (mo->pos[c]) used += (size_t)snprintf(buf + used, size - used, ",%s", channel_names[c]);
 }
 
 /* Largest distance from the rotation axis's point to a corner of the tank. */

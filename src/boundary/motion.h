@@ -24,12 +24,15 @@ typedef struct {
     bool rotates;     /* a rotation channel is driven */
     /* type = table: knots and the natural cubic spline's second derivatives per channel */
     size_t n_knots;
+    bool table_by_position; /* no header: t,x,y[,z] by position */
     double *t, *pos[MOTION_CHANNELS], *acc[MOTION_CHANNELS];
 } motion;
 
 /* Reads the table file when there is one. Returns 0, or 2 with a message in err. */
 int motion_init(motion *mo, const config *cfg, char *err, size_t err_len);
 void motion_free(motion *mo);
+/* A table's columns as its rows hold them, e.g. "t,x,y,roll". */
+void motion_table_columns(const motion *mo, char *buf, size_t size);
 /* Acceleration (m/s^2) of motion.center at time t along the inertial x, y, z. */
 void motion_acceleration(const motion *mo, double t, double a[3]);
 /* The angles roll, pitch, yaw (rad) at time t, their rates and second derivatives. */

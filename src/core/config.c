@@ -2,6 +2,7 @@
  * probes, the defaults that depend on other keys and the checks of the whole case. The INI
  * engine that reads it, checks each value and writes it back is io/ini_schema.c. */
 #include "core/config.h"
+#include "core/decimal.h"
 #include "io/ini_schema.h"
 
 #include <ctype.h>
@@ -82,7 +83,9 @@ static const char *const sections[] = {"case",  "tank",     "liquid", "fluid", "
 /* What reading a case keeps beside the config: how many coordinates the pressure points were
  * given with, checked against case.dim once dim is final. */
 typedef struct {
-    int point_coords; /* 0 if no point */
+    int point_coords;         /* 0 if no point */
+    config_case_check check;  /* config_load_checked's, NULL for none */
+    void *check_user;
 } case_reading;
 
 /* Reads one number of a list; `seps` are the characters that may follow it. */
@@ -90,7 +93,7 @@ static bool list_number(const ini_key *k, const char **p, const char *seps, doub
                         size_t n)
 {
     char *end;
-    *v = strtod(*p, &end);
+    *v = decimal_strtod(*p, &end);
     if (end == *p || !isfinite(*v) ||
         (*end && !isspace((unsigned char)*end) && !strchr(seps, *end))) {
         char stop[16];
@@ -99,7 +102,7 @@ static bool list_number(const ini_key *k, const char **p, const char *seps, doub
         if (len == 0)
             snprintf(why, n, "unexpected '%c'; must be %s", **p, k->allowed);
         else
-            snprintf(why, n, "'%.*s' is not a finite number; must be %s", len > 40 ? 40 : len, *p,
+            snprintf(why, n, "'%.*s' is not a finite decimal number; must be %s", len > 40 ? 40 : len, *p,
                      k->allowed);
         return false;
     }
@@ -332,7 +335,7 @@ static const ini_key keys[] = {
         "a time >= 0 (s; 0 = whole run)",
         "time after which the tank stops accelerating (keeps its velocity)"),
     KEY("motion", "file", INI_PATH, 0, "", motion_file, ANY, NULL,
-        "a readable CSV file t,x,y[,z][,roll,pitch,yaw] (required when type = table)",
+        "a readable CSV file, header t then any of x,y,z,roll,pitch,yaw; only for type = table",
         "CSV of the tank displacement and angles against time for type = table"),
 
     KEY("model", "scheme", INI_WORD, 0, "delta-plus-ale", scheme, ANY, scheme_words,
@@ -534,8 +537,16 @@ static void check_motion(ini_session *ctx)
         ini_fail_key(ctx, ini_key_of(ctx, "motion", "period"), why);
         return;
     }
-    if (cfg->motion != MOTION_TABLE) return;
     const ini_key *file = ini_key_of(ctx, "motion", "file");
+    if (cfg->motion != MOTION_TABLE && cfg->motion_file[0]) {
+        snprintf(why, sizeof why,
+                 "applies only to motion.type = table, and the type is %s: set motion.type = "
+                 "table to follow the file, or remove motion.file",
+                 type);
+        ini_fail_key(ctx, file, why);
+        return;
+    }
+    if (cfg->motion != MOTION_TABLE) return;
     if (!cfg->motion_file[0]) {
         ini_fail_key(ctx, file, "required when motion.type = table: a CSV file t,x,y[,z]");
         return;
@@ -621,10 +632,23 @@ int config_wall_axis(const config *cfg, const double x[3])
     return axis;
 }
 
+/* The caller's check of the whole case, last, blaming the key it names where it was set. */
+static void check_whole_case(ini_session *ctx)
+{
+    const case_reading *reading = ini_user(ctx);
+    if (!reading->check) return;
+    const char *key = NULL;
+    char why[2048], section[32];
+    if (!reading->check(ini_target(ctx), reading->check_user, &key, why, sizeof why)) return;
+    size_t dot = strcspn(key, ".");
+    snprintf(section, sizeof section, "%.*s", (int)dot, key);
+    ini_fail_key(ctx, ini_key_of(ctx, section, key + dot + 1), why);
+}
+
 /* In this order, after the required keys: defaults that depend on other keys need those keys
- * first. */
+ * first, and the whole case's check needs every key. */
 static void (*const checks[])(ini_session *ctx) = {resolve_defaults, check_liquid, check_motion,
-                                                   check_probes};
+                                                   check_probes, check_whole_case};
 
 static const ini_schema case_schema = {sections, N_SECTIONS, keys,
                                        N_KEYS,   checks,     sizeof checks / sizeof checks[0]};
@@ -634,7 +658,14 @@ static const ini_schema case_schema = {sections, N_SECTIONS, keys,
 int config_load(config *cfg, const char *path, const char *const *overrides, int n_overrides,
                 char *err, size_t err_len)
 {
-    case_reading reading = {0};
+    return config_load_checked(cfg, path, overrides, n_overrides, NULL, NULL, err, err_len);
+}
+
+int config_load_checked(config *cfg, const char *path, const char *const *overrides,
+                        int n_overrides, config_case_check check, void *check_user, char *err,
+                        size_t err_len)
+{
+    case_reading reading = {0, check, check_user};
     ini_input in = {path, NULL, path};
     return ini_load(&case_schema, cfg, sizeof *cfg, &in, overrides, n_overrides, &reading, err,
                     err_len);

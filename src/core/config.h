@@ -105,6 +105,17 @@ typedef struct {
 int config_load(config *cfg, const char *path, const char *const *overrides, int n_overrides,
                 char *err, size_t err_len);
 
+/* A check of the whole case once its keys are read and checked (the numbers derived from it,
+ * its motion, its cost): 0, or nonzero with the key to blame ("section.name", a key of the
+ * case file) in *key and the reason in why. */
+typedef int (*config_case_check)(const config *cfg, void *user, const char **key, char *why,
+                                 size_t why_len);
+/* config_load, then `check` (with `user`) within the load, so that its message names the file
+ * and line of the key it blames as every other error does. */
+int config_load_checked(config *cfg, const char *path, const char *const *overrides,
+                        int n_overrides, config_case_check check, void *check_user, char *err,
+                        size_t err_len);
+
 /* Same, from a string (tests, fuzzing, a checkpoint's case); `origin` names it in messages.
  * Without a file to name it, case.name defaults to "case". */
 int config_load_string(config *cfg, const char *text, const char *origin,

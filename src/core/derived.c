@@ -10,7 +10,8 @@
    nor multiplied out in a long (derived_compute). */
 #define PARTICLES_MAX INT32_MAX
 
-static int check_sanity(const config *cfg, const derived *dv, char *err, size_t err_len);
+static int check_sanity(const config *cfg, const derived *dv, const char **key, char *why,
+                        size_t why_len);
 
 static double min2(double a, double b) { return a < b ? a : b; }
 
@@ -166,7 +167,8 @@ void derived_compute(const config *cfg, const derived_inputs *in, derived *dv)
         dv->response_period = dv->t_sloshing1;
 }
 
-int derived_check(const config *cfg, const derived *dv, char *err, size_t err_len)
+int derived_problem(const config *cfg, const derived *dv, const char **key, char *why,
+                    size_t why_len)
 {
     if (box_points(dv) > PARTICLES_MAX) {
         char axes[64];
@@ -175,27 +177,38 @@ int derived_check(const config *cfg, const derived *dv, char *err, size_t err_le
         else
             snprintf(axes, sizeof axes, "%ld x %ld x %ld", dv->n_axis[0], dv->n_axis[1],
                      dv->n_axis[2]);
-        snprintf(err, err_len,
-                 "numerics.resolution = %d: the liquid box's lattice would have %.3g points "
-                 "(%s), more than the %d particles the solver can index; lower the resolution",
-                 cfg->resolution, box_points(dv), axes, PARTICLES_MAX);
+        *key = "numerics.resolution";
+        snprintf(why, why_len,
+                 "the liquid box's lattice would have %.3g points (%s), more than the %d "
+                 "particles the solver can index; lower the resolution",
+                 box_points(dv), axes, PARTICLES_MAX);
         return 2;
     }
     if (dv->c0 <= 0.0) {
-        snprintf(err, err_len,
-                 "numerics.sound_speed = auto: 10 sqrt(2 g_max H) is 0 without gravity or tank "
-                 "motion; give a sound speed > 0 (m/s; Eq. 6: at least 10 times the largest "
-                 "speed)");
+        *key = "numerics.sound_speed";
+        snprintf(why, why_len,
+                 "10 sqrt(2 g_max H) is 0 without gravity or tank motion; give a sound speed > "
+                 "0 (m/s; Eq. 6: at least 10 times the largest speed)");
         return 2;
     }
     if (cfg->scheme == SCHEME_DELTA_PLUS_ALE && cfg->eta_control == ETA_CONTROL_ADAPTIVE &&
         !(dv->response_period > 0.0)) {
-        snprintf(err, err_len,
-                 "model.eta_control = adaptive averages eps_V1 over the period of the flow's "
-                 "response, which needs periodic motion or gravity; use eta_control = threshold");
+        *key = "model.eta_control";
+        snprintf(why, why_len,
+                 "adaptive averages eps_V1 over the period of the flow's response, which needs "
+                 "periodic motion or gravity; use eta_control = threshold");
         return 2;
     }
-    return check_sanity(cfg, dv, err, err_len);
+    return check_sanity(cfg, dv, key, why, why_len);
+}
+
+int derived_check(const config *cfg, const derived *dv, char *err, size_t err_len)
+{
+    const char *key = "";
+    char why[1024];
+    int status = derived_problem(cfg, dv, &key, why, sizeof why);
+    if (status) snprintf(err, err_len, "%s: %s", key, why);
+    return status;
 }
 
 /* The liquid's extent along axis d, and the keys that set it and its particle count. */
@@ -203,6 +216,8 @@ static const char *const axis_name[3] = {"x", "y", "z"};
 static const char *const axis_keys[3] = {"liquid.length or numerics.resolution",
                                          "numerics.resolution",
                                          "tank.width (the liquid fills it) or numerics.resolution"};
+static const char *const axis_key[3] = {"numerics.resolution", "numerics.resolution",
+                                        "tank.width"};
 
 static double liquid_extent(const config *cfg, int d)
 {
@@ -227,14 +242,15 @@ static void dt_limit(const derived *dv, const char **name, const char **keys)
     }
 }
 
-/* The checks of derived_check that the issue 19 sanity checks added: a case whose first step
-   already breaks a bound, or that would never end. */
-static int check_sanity(const config *cfg, const derived *dv, char *err, size_t err_len)
+/* A case whose first step already breaks a bound, or that would never end. */
+static int check_sanity(const config *cfg, const derived *dv, const char **key, char *why,
+                        size_t why_len)
 {
     /* fewer than 2 particles across: no pair of particles along that axis, no gradient */
     for (int d = 0; d < cfg->dim; d++)
         if (dv->n_axis[d] < DERIVED_MIN_ACROSS) {
-            snprintf(err, err_len,
+            *key = axis_key[d];
+            snprintf(why, why_len,
                      "the liquid is %ld particle(s) across %s (%.6g m at dr = H/N = %.6g m); at "
                      "least %d are needed: raise %s",
                      dv->n_axis[d], axis_name[d], liquid_extent(cfg, d), dv->dr, DERIVED_MIN_ACROSS,
@@ -247,10 +263,11 @@ static int check_sanity(const config *cfg, const derived *dv, char *err, size_t 
     if (!(steps <= DERIVED_MAX_STEPS)) {
         const char *name, *keys;
         dt_limit(dv, &name, &keys);
-        snprintf(err, err_len,
-                 "case.t_end = %g s at dt = %.3g s (Eq. 8: %s, c0 = %.3g m/s, g_max = %.3g "
-                 "m/s^2) is %.3g steps, more than %.0e; lower case.t_end or check %s",
-                 cfg->t_end, dv->dt, name, dv->c0, dv->g_max, steps, DERIVED_MAX_STEPS, keys);
+        *key = "case.t_end";
+        snprintf(why, why_len,
+                 "at dt = %.3g s (Eq. 8: %s, c0 = %.3g m/s, g_max = %.3g m/s^2) it is %.3g "
+                 "steps, more than %.0e; lower case.t_end or check %s",
+                 dv->dt, name, dv->c0, dv->g_max, steps, DERIVED_MAX_STEPS, keys);
         return 2;
     }
     /* the linear EOS (Eq. 3) at the bottom of a column H under g_max at rest: the lattice
@@ -259,12 +276,12 @@ static int check_sanity(const config *cfg, const derived *dv, char *err, size_t 
     double rho0 = cfg->density;
     double rho_bottom = rho0 * (1.0 + dv->g_max * cfg->liquid_height / (dv->c0 * dv->c0));
     if (!(rho_bottom <= rho0 * (1.0 + cfg->density_bound))) {
-        snprintf(err, err_len,
-                 "numerics.sound_speed: the hydrostatic density at the bottom, rho0 (1 + g_max H "
-                 "/ c0^2) = %.6g kg/m^3 (g_max = %.4g m/s^2, H = %g m, c0 = %.4g m/s), is outside "
-                 "rho0 (1 +- %g) (numerics.density_bound) before the first step; raise "
-                 "numerics.sound_speed to at least %.3g m/s (Eq. 6 asks %.3g m/s) or "
-                 "numerics.density_bound",
+        *key = "numerics.sound_speed";
+        snprintf(why, why_len,
+                 "the hydrostatic density at the bottom, rho0 (1 + g_max H / c0^2) = %.6g kg/m^3 "
+                 "(g_max = %.4g m/s^2, H = %g m, c0 = %.4g m/s), is outside rho0 (1 +- %g) "
+                 "(numerics.density_bound) before the first step; raise numerics.sound_speed to "
+                 "at least %.3g m/s (Eq. 6 asks %.3g m/s) or numerics.density_bound",
                  rho_bottom, dv->g_max, cfg->liquid_height, dv->c0, cfg->density_bound,
                  sqrt(dv->g_max * cfg->liquid_height / cfg->density_bound), dv->c0_eq6);
         return 2;

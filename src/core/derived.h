@@ -71,7 +71,10 @@ bool derived_lattice_point(const config *cfg, const derived *dv, long c0, long c
  * particles across each dimension of the liquid; at most DERIVED_MAX_STEPS steps of the dt
  * estimate to t_end; a hydrostatic density at the bottom, rho0 (1 + g_max H / c0^2), within
  * numerics.density_bound). The one check of `vcsph check` and of every run (solver_init).
- * Returns 0, or 2 with a message naming the key. */
+ * Returns 0, or 2 with the key to change ("section.name") in *key and the reason in why. */
+int derived_problem(const config *cfg, const derived *dv, const char **key, char *why,
+                    size_t why_len);
+/* The same as one message, "section.name: why". */
 int derived_check(const config *cfg, const derived *dv, char *err, size_t err_len);
 /* The warnings of a runnable case, each a message without prefix passed to emit(msg, ctx):
  * c0 below Eq. (6)'s estimate dv->c0_eq6, fewer than DERIVED_FEW_ACROSS particles across a

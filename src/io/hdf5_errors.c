@@ -2,10 +2,27 @@
 #include "io/hdf5_errors.h"
 
 #include <stdio.h>
+#include <string.h>
+
+/* The reason of a file driver's failure: its "error message = '...'" (the system's, e.g. "No
+ * space left on device"), not the buffer's address, offsets and sizes around it; any other
+ * description as it is. */
+static void reason_of(const char *desc, char *detail)
+{
+    static const char marker[] = "error message = '";
+    const char *at = strstr(desc, marker);
+    if (!at) {
+        snprintf(detail, HDF5_DETAIL_LEN, "%s", desc);
+        return;
+    }
+    at += sizeof marker - 1;
+    const char *end = strchr(at, '\'');
+    snprintf(detail, HDF5_DETAIL_LEN, "%.*s", end ? (int)(end - at) : (int)strlen(at), at);
+}
 
 static herr_t innermost(unsigned n, const H5E_error2_t *e, void *detail)
 {
-    if (n == 0 && e->desc) snprintf(detail, HDF5_DETAIL_LEN, "%s", e->desc);
+    if (n == 0 && e->desc) reason_of(e->desc, detail);
     return 0;
 }
 

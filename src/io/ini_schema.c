@@ -1,5 +1,6 @@
 /* ini_schema: typed INI keys read into a struct with inih (ini_schema.h). */
 #include "io/ini_schema.h"
+#include "core/suggest.h"
 #include "io/ini_value.h"
 
 #include <ctype.h>
@@ -104,7 +105,7 @@ static void join_words(const char *const *words, size_t n, char *buf, size_t siz
 static void fail_unknown_section(ini_session *ctx, const char *at, const char *name)
 {
     const ini_schema *schema = ctx->schema;
-    const char *hint = ini_suggest(name, schema->sections, schema->n_sections);
+    const char *hint = word_suggest(name, schema->sections, schema->n_sections);
     char list[256];
     join_words(schema->sections, schema->n_sections, list, sizeof list);
     if (hint)
@@ -122,7 +123,7 @@ static void fail_unknown_key(ini_session *ctx, const char *at, const char *secti
         return;
     }
     size_t n = section_key_names(ctx->schema, section, names);
-    const char *hint = ini_suggest(name, names, n);
+    const char *hint = word_suggest(name, names, n);
     if (hint) {
         fail(ctx, "%s: unknown key '%s.%s'; did you mean '%s.%s'?", at, section, name, section,
              hint);

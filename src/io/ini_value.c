@@ -1,6 +1,8 @@
 /* ini_value: the values of the built-in key kinds, text to field and back, and the helpers of
  * the formats (ini_schema.h, ini_value.h). */
 #include "io/ini_value.h"
+#include "core/decimal.h"
+#include "core/suggest.h"
 
 #include <ctype.h>
 #include <errno.h>
@@ -53,12 +55,13 @@ static bool in_range(double v, const ini_range *r)
     return above && below;
 }
 
-/* A whole string that is one finite number: "1.0abc", "", "inf" and "nan" are not. */
+/* A whole string that is one finite decimal number: "1.0abc", "", "inf", "nan" and "0x1p-4"
+ * are not. */
 static bool parse_real(const char *s, double *out)
 {
     if (!*s || isspace((unsigned char)*s)) return false;
     char *end;
-    double v = strtod(s, &end);
+    double v = decimal_strtod(s, &end);
     if (end == s || *end != '\0' || !isfinite(v)) return false;
     *out = v;
     return true;
@@ -86,52 +89,6 @@ bool ini_store_string(char *dst, size_t size, const char *s)
     return true;
 }
 
-/* Case-insensitive Levenshtein distance; long strings are never close. */
-static int edit_distance(const char *a, const char *b)
-{
-    enum { CAP = 64 };
-    size_t la = strlen(a), lb = strlen(b);
-    if (la >= CAP || lb >= CAP) return INT_MAX;
-    int prev[CAP], cur[CAP];
-    for (size_t j = 0; j <= lb; j++) prev[j] = (int)j;
-    for (size_t i = 1; i <= la; i++) {
-        cur[0] = (int)i;
-        for (size_t j = 1; j <= lb; j++) {
-            int same = tolower((unsigned char)a[i - 1]) == tolower((unsigned char)b[j - 1]);
-            int best = prev[j - 1] + !same;
-            if (prev[j] + 1 < best) best = prev[j] + 1;
-            if (cur[j - 1] + 1 < best) best = cur[j - 1] + 1;
-            cur[j] = best;
-        }
-        memcpy(prev, cur, sizeof prev);
-    }
-    return prev[lb];
-}
-
-/* The candidate closest to `given` (edit distance <= 2 and shorter than the word), else one
- * that `given` starts or ends a prefix of; NULL when nothing is close. */
-const char *ini_suggest(const char *given, const char *const *cands, size_t n)
-{
-    const char *best = NULL;
-    int best_d = 3;
-    int len = (int)strlen(given);
-    for (size_t i = 0; i < n; i++) {
-        int d = edit_distance(given, cands[i]);
-        if (d < best_d && d < len) {
-            best = cands[i];
-            best_d = d;
-        }
-    }
-    if (best || len < 2) return best;
-    for (size_t i = 0; i < n; i++) {
-        size_t lc = strlen(cands[i]);
-        if (strncmp(cands[i], given, (size_t)len) == 0 ||
-            (lc >= 2 && strncmp(given, cands[i], lc) == 0))
-            return cands[i];
-    }
-    return NULL;
-}
-
 static bool set_int(void *target, const ini_key *k, const char *s, char *why, size_t n)
 {
     long v;
@@ -151,7 +108,7 @@ static bool set_real_checked(void *target, const ini_key *k, const char *s, char
 {
     double v;
     if (!parse_real(s, &v)) {
-        snprintf(why, n, "not a finite number; must be %s", k->allowed);
+        snprintf(why, n, "not a finite decimal number; must be %s", k->allowed);
         return false;
     }
     if (!in_range(v, &k->range)) {
@@ -177,7 +134,7 @@ static bool set_word(void *target, const ini_key *k, const char *s, char *why, s
     if (i < 0) {
         size_t count = 0;
         while (k->words[count]) count++;
-        const char *hint = ini_suggest(s, k->words, count);
+        const char *hint = word_suggest(s, k->words, count);
         if (hint)
             snprintf(why, n, "did you mean '%s'? must be %s", hint, k->allowed);
         else

@@ -1,6 +1,6 @@
 /* ini_value: the values of ini_schema's built-in key kinds (int, real, real or auto, bool,
  * word, name, path): text to field with the range check, and field to text that reads back
- * to the same bits; and the "did you mean" of unknown words. Internal to io/ini_schema.c. */
+ * to the same bits. Internal to io/ini_schema.c. */
 #ifndef VCSPH_INI_VALUE_H
 #define VCSPH_INI_VALUE_H
 
@@ -10,8 +10,5 @@
 bool ini_value_set(void *target, const ini_key *k, const char *s, char *why, size_t n);
 /* The field of key k (any kind) as a file spells it. */
 void ini_value_format(const void *target, const ini_key *k, char *buf, size_t size);
-/* The candidate closest to `given` (edit distance <= 2 and shorter than the word), else one
- * that `given` starts or ends a prefix of; NULL when nothing is close. */
-const char *ini_suggest(const char *given, const char *const *cands, size_t n);
 
 #endif

@@ -2,17 +2,25 @@
 #include "io/snapshot_read.h"
 #include "io/hdf5_attr.h"
 
+#include <errno.h>
 #include <hdf5.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 int snapshot_read_info(const char *path, snapshot_info *info, char *err, size_t err_len)
 {
     H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
     info->case_text = NULL;
+    FILE *readable = fopen(path, "rb");
+    if (!readable) {
+        snprintf(err, err_len, "%s: cannot open: %s", path, strerror(errno));
+        return -1;
+    }
+    fclose(readable);
     hid_t file = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT);
     if (file < 0) {
-        snprintf(err, err_len, "%s: not a readable HDF5 file", path);
+        snprintf(err, err_len, "%s: not an HDF5 file (or a damaged one)", path);
         return -1;
     }
     int rc = -1;

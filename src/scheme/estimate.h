@@ -73,4 +73,19 @@ static inline void estimate_describe(const run_estimate *e, char *memory, size_t
              e->steps, e->n_fluid, e->us_per_particle_step, e->threads);
 }
 
+#define ESTIMATE_DAY_S 86400.0
+
+/* The warning of a run estimated at more than a day, without prefix; empty when there is none. */
+static inline void estimate_cost_warning(const run_estimate *e, char *msg, size_t msg_len)
+{
+    msg[0] = '\0';
+    if (!(e->seconds > ESTIMATE_DAY_S)) return;
+    char wall[32];
+    estimate_format_seconds(e->seconds, wall, sizeof wall);
+    snprintf(msg, msg_len,
+             "this run is estimated at %s of wall time (%.3g steps of %.3g particles); it writes "
+             "a checkpoint every output.checkpoint_every s, and `run --restart` continues it",
+             wall, e->steps, e->n_fluid);
+}
+
 #endif
