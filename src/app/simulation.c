@@ -185,15 +185,14 @@ static int finish_step(run *r)
     return RUN_OK;
 }
 
-/* The command that continues this run: the same processes' (any number of them would do). */
-/* The command that continues this run, as the user started it (argv[0]), so that it pastes. */
+/* The command that continues this run, as the user started it (argv[0]) so that it pastes:
+ * the same processes' (any number of them would do). */
 static void run_command(const run *r, char *buf, size_t len)
 {
-    const char *program = r->opt->program ? r->opt->program : "vcsph";
     if (r->team)
-        snprintf(buf, len, "mpirun -n %d %s run", r->team->size, program);
+        snprintf(buf, len, "mpirun -n %d %s run", r->team->size, r->opt->program);
     else
-        snprintf(buf, len, "%s run", program);
+        snprintf(buf, len, "%s run", r->opt->program);
 }
 
 static const char *signal_name(int sig)
@@ -307,6 +306,7 @@ static void log_start(const run *r)
         double left = fmax(0.0, 1.0 - r->s.t / cfg->t_end);
         est.steps *= left;
         est.seconds *= left;
+        est.output_seconds *= left;
     }
     estimate_describe(&est, memory, sizeof memory, wall, sizeof wall);
     log_info("vcsph: memory estimate %s; wall time estimate %s", memory, wall);

@@ -9,14 +9,73 @@
 #include <math.h>
 #include <stdint.h>
 
-/* Cost of one particle-step (one fluid particle through one RK4 step, its ghosts, neighbour
-   lists, per-step fields and volume diagnostics included) on one thread of the 2-core
-   development machine, measured on whole runs of the shipped cases as they are
-   (delta-plus-ALE, surface tension, probes, snapshots and images): a run's wall time over
-   the steps and particles this estimate counts (docs/checks.md). cases/inm1.ini at N = 25
-   over 5 s, 3.4 us; cases/inm2-3d.ini at N = 20 over 0.5 s, 7.5 us. Finer resolutions cost
-   less a particle-step (INM1 at N = 50: 2.2 us; INM2 3D at N = 40: 5.3 us): this errs long. */
-#define US_PER_PARTICLE_STEP (DIM == 2 ? 3.4 : 7.5)
+/* The wall time's model (docs/checks.md), its figures measured on the 2-core development machine
+   on whole runs of the shipped cases (delta-plus-ALE with its correction, surface tension in
+   2D) with every output off, then with each output alone (2026-12-07):
+   - one thread, a particle-step: 2D 3.9 / 2.87 / 2.24 / 2.21 us at 290 / 1775 / 7150 / 28600
+     particles (cases/default.ini at N = 10, 25, 50, 100), the surface's share falling as
+     1/sqrt(n): US_2D + US_2D_EDGE / sqrt(n); 3D 6.9 / 6.7 / 6.9 us at 1224 / 6840 / 23220
+     (cases/inm2-3d.ini at N = 12, 20, 30);
+   - more threads: two ran 1.6 to 2.1 times as fast from 1775 particles on in 2D, 1.8 to 1.95 in
+     3D, and no faster at 290 (the thread tuner then keeps one): a step on p threads takes its
+     one-thread time / (THREAD_EFFICIENCY p) + STEP_SYNC_US, or the one-thread time if less;
+   - outputs: a row of timeseries.csv (with loads.csv and probes.csv) ROW_US + ROW_US_PARTICLE n,
+     a snapshot SNAPSHOT_US + SNAPSHOT_US_PARTICLE n, a particle image IMAGE_US; and every
+     multiple of output.timeseries_every, output.snapshot_every and the motion's period on
+     which a step lands splits a step in two, half a step more on average each;
+   - the start (lattice, first neighbour lists, files) START_US + START_US_PARTICLE n.
+   The machine's speed varied by some 20 % from one minute to the next: the one-thread figures
+   are those fits scaled by 0.9, which centres tools/check-estimates' whole runs on 1. */
+#define US_2D                1.8
+#define US_2D_EDGE           29.0
+#define US_3D                6.2
+#define THREAD_EFFICIENCY    0.9
+#define STEP_SYNC_US         300.0
+#define ROW_US               100.0
+#define ROW_US_PARTICLE      0.3
+#define SNAPSHOT_US          3000.0
+#define SNAPSHOT_US_PARTICLE 0.2
+#define IMAGE_US             25000.0
+#define START_US             3e4
+#define START_US_PARTICLE    1.0
+
+static double us_per_particle_step(double n)
+{
+    return DIM == 2 ? US_2D + US_2D_EDGE / sqrt(fmax(n, 1.0)) : US_3D;
+}
+
+/* How many times an interval `every` (s) fits in t_end; 0 for an output that is off. */
+static double count_of(double t_end, double every)
+{
+    return every > 0.0 ? floor(t_end / every + 1e-9) : 0.0;
+}
+
+/* The run's wall time: its steps, each on the threads that pay, its outputs and its start. */
+static void estimate_seconds(const config *cfg, const derived *dv, run_estimate *e)
+{
+    double n = e->n_fluid;
+    double step_1 = n * e->us_per_particle_step;
+    double step_p = step_1 / (THREAD_EFFICIENCY * e->threads) + STEP_SYNC_US;
+    e->speedup = e->threads > 1 && step_p < step_1 ? step_1 / step_p : 1.0;
+    /* the finest interval a step lands on sets the extra steps */
+    double finest = cfg->t_end;
+    const double landing[] = {cfg->timeseries_every, cfg->snapshot_every,
+                              config_motion_translation_axis(cfg->motion) >= 0 ||
+                                      config_motion_rotation(cfg->motion) >= 0
+                                  ? cfg->period
+                                  : 0.0};
+    for (int k = 0; k < 3; k++)
+        if (landing[k] > 0.0) finest = fmin(finest, landing[k]);
+    e->steps = cfg->t_end / dv->dt + 0.5 * count_of(cfg->t_end, finest);
+    double rows = cfg->timeseries_every > 0.0 ? count_of(cfg->t_end, cfg->timeseries_every)
+                                              : e->steps;
+    double output_us = rows * (ROW_US + ROW_US_PARTICLE * n) +
+                       count_of(cfg->t_end, cfg->snapshot_every) *
+                           (SNAPSHOT_US + SNAPSHOT_US_PARTICLE * n) +
+                       count_of(cfg->t_end, cfg->image_every) * IMAGE_US;
+    e->output_seconds = 1e-6 * (output_us + START_US + START_US_PARTICLE * n);
+    e->seconds = 1e-6 * e->steps * step_1 / e->speedup + e->output_seconds;
+}
 
 /* Lattice points of an axis of n points, spaced s, whose first point is dist0 + s/2 from a
    wall, that lie within `reach` of it: the layers that get a ghost on that side. */
@@ -92,8 +151,7 @@ void DIM_NAME(estimate_run)(const config *cfg, const derived *dv, int threads, r
     e->bytes = store + work + lists + grid + st;
     e->bytes_per_particle = n > 0.0 ? e->bytes / n : 0.0;
     e->neighbours_per_row = row;
-    e->steps = cfg->t_end / dv->dt;
-    e->us_per_particle_step = US_PER_PARTICLE_STEP;
+    e->us_per_particle_step = us_per_particle_step(n);
     e->threads = threads > 0 ? threads : 1;
-    e->seconds = e->steps * n * US_PER_PARTICLE_STEP * 1e-6 / e->threads;
+    estimate_seconds(cfg, dv, e);
 }

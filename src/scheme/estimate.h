@@ -15,10 +15,14 @@ typedef struct {
                                     lists, cells, surface-tension work */
     double bytes_per_particle;   /* bytes / n_fluid */
     double neighbours_per_row;   /* the neighbour list's row width, entries */
-    double steps;                /* t_end / dt, dt the estimate of Eq. (8) */
-    double us_per_particle_step; /* measured, one thread (estimate.c cites where) */
+    double steps;                /* t_end / dt (dt the estimate of Eq. (8)), and the steps
+                                    split by landing on the outputs' times */
+    double us_per_particle_step; /* on one thread, at this particle count (estimate.c) */
     int threads;                 /* omp_get_max_threads() */
-    double seconds;              /* steps x n_fluid x us_per_particle_step / threads */
+    double speedup;              /* of the threads over one, 1 where one is faster */
+    double output_seconds;       /* the start, the rows, snapshots and images */
+    double seconds;              /* steps x n_fluid x us_per_particle_step / speedup, plus
+                                    output_seconds */
 } run_estimate;
 
 void estimate_run_2d(const config *cfg, const derived *dv, int threads, run_estimate *out);
@@ -69,8 +73,10 @@ static inline void estimate_describe(const run_estimate *e, char *memory, size_t
              "of %.0f)",
              b, e->bytes_per_particle, e->n_fluid, e->n_ghost, e->neighbours_per_row);
     snprintf(wall, wall_len,
-             "%s (%.3g steps x %.3g particles x %.3g us per particle-step / %d thread(s))", t,
-             e->steps, e->n_fluid, e->us_per_particle_step, e->threads);
+             "%s (%.3g steps x %.3g particles x %.3g us per particle-step / %.2g on %d "
+             "thread(s), and %.2g s of start and outputs)",
+             t, e->steps, e->n_fluid, e->us_per_particle_step, e->speedup, e->threads,
+             e->output_seconds);
 }
 
 #define ESTIMATE_DAY_S 86400.0
