@@ -3,7 +3,6 @@
 #include "boundary/motion.h"
 #include "scheme/case_numbers.h"
 
-#include <math.h>
 #include <omp.h>
 #include <stdio.h>
 

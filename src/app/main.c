@@ -4,21 +4,18 @@
 #include "app/plot_command.h"
 #include "core/run_team.h"
 #include "app/simulation.h"
-#include "boundary/motion.h"
 #include "core/config.h"
 #include "core/derived.h"
 #include "core/version.h"
 #include "io/checkpoint.h"
 #include "io/hdf5_errors.h"
 #include "io/snapshot_read.h"
-#include "scheme/case_numbers.h"
 #include "scheme/estimate.h"
 
 #ifdef VCSPH_MPI
 #include "parallel/mpi_team.h"
 #endif
 
-#include <omp.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
