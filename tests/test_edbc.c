@@ -1,0 +1,105 @@
+/* EdBC, Eq. (9) (src/scheme/control.c): on a tank's lattice with three particles set by hand,
+ * a particle of S_F with lambda < 0.1 (a drop or a thin jet) gets p = 0 and rho = rho0, its
+ * volume m / rho0, exactly; a particle of S_F at lambda = 0.1 and an interior particle at a
+ * small lambda keep their values. model.edbc = true acts always, false never, with-eta0 only in
+ * the eta control's eta = 0 regime; n_edbc counts the particles it reset. */
+#include "diag/freesurface.h"
+#include "scheme/control.h"
+#include "scheme/solver.h"
+
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <cmocka.h>
+
+#include "check.h"
+
+static const char tank_case[] = "[case]\nname = edbc\nt_end = 1\n"
+                                "[tank]\nlength = 0.4\nheight = 0.3\nwidth = 0.1\n"
+                                "[liquid]\nheight = 0.1\n"
+                                "[model]\nscheme = delta-plus-ale\n"
+                                "[numerics]\nresolution = 8\n";
+
+/* The state of particle i that EdBC may change. */
+typedef struct {
+    double rho, p, vol;
+} state_of;
+
+static state_of read_state(const particles *p, size_t i)
+{
+    return (state_of){p->rho[i], p->p[i], p->vol[i]};
+}
+
+/* Particle i set off rho0 (2 % compressed, its pressure and volume to match) in S_F or the
+ * interior, at lambda. */
+static void set_particle(particles *p, size_t i, uint8_t surface, double lambda, double rho0)
+{
+    p->surface[i] = surface;
+    p->lambda[i] = lambda;
+    p->rho[i] = 1.02 * rho0;
+    p->p[i] = 1234.5;
+    p->vol[i] = p->m[i] / p->rho[i];
+}
+
+/* EdBC in mode `edbc` (the eta = 0 regime or not) on the three particles: how many it reset,
+ * asserting that exactly the drop's particle was reset when it acts and none otherwise. */
+static long edbc_on_three(edbc_mode edbc, bool eta0_regime)
+{
+    config cfg;
+    char err[1024];
+    char dim[32];
+    snprintf(dim, sizeof dim, "case.dim=%d", DIM);
+    const char *overrides[] = {dim};
+    if (config_load_string(&cfg, tank_case, "test", overrides, 1, err, sizeof err))
+        fail_msg("%s", err);
+    cfg.edbc = edbc;
+    solver s;
+    if (solver_init(&s, &cfg, err, sizeof err)) fail_msg("%s", err);
+    s.eta_control.eta0_regime = eta0_regime;
+    particles *p = &s.p;
+    double rho0 = s.pp.rho0;
+    for (size_t i = 0; i < p->n_fluid; i++) { /* nothing else qualifies */
+        p->surface[i] = SURFACE_INTERIOR;
+        p->lambda[i] = 1.0;
+    }
+    set_particle(p, 0, SURFACE_FREE, 0.05, rho0);          /* a drop's particle */
+    set_particle(p, 1, SURFACE_REGION, EDBC_LAMBDA, rho0); /* at the threshold: kept */
+    set_particle(p, 2, SURFACE_INTERIOR, 0.05, rho0);      /* interior: kept */
+    state_of before[3];
+    for (size_t i = 0; i < 3; i++) before[i] = read_state(p, i);
+    control_edbc(&s);
+    bool acts = control_edbc_acts(&s);
+    state_of drop = read_state(p, 0);
+    if (acts) {
+        assert_true(drop.rho == rho0);
+        assert_true(drop.p == 0.0);
+        assert_true(drop.vol == p->m[0] / rho0);
+    } else {
+        assert_memory_equal(&drop, &before[0], sizeof drop);
+    }
+    for (size_t i = 1; i < 3; i++) {
+        state_of now = read_state(p, i);
+        assert_memory_equal(&now, &before[i], sizeof now);
+    }
+    long n = s.n_edbc;
+    assert_int_equal(n, acts ? 1 : 0);
+    solver_free(&s);
+    return n;
+}
+
+static void test_edbc_modes(void **state)
+{
+    (void)state;
+    assert_int_equal(edbc_on_three(EDBC_ON, false), 1);
+    assert_int_equal(edbc_on_three(EDBC_ON, true), 1);
+    assert_int_equal(edbc_on_three(EDBC_OFF, true), 0);
+    assert_int_equal(edbc_on_three(EDBC_WITH_ETA0, true), 1);
+    assert_int_equal(edbc_on_three(EDBC_WITH_ETA0, false), 0);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {cmocka_unit_test(test_edbc_modes)};
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
