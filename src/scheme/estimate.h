@@ -49,8 +49,10 @@ static inline void estimate_format_bytes(double bytes, char *buf, size_t len)
 /* "45 s" / "3.2 min" / "5.1 h" / "12 days" / "3.4 years". */
 static inline void estimate_format_seconds(double s, char *buf, size_t len)
 {
-    if (s < 120.0)
+    if (s < 10.0)
         snprintf(buf, len, "%.2g s", s);
+    else if (s < 120.0)
+        snprintf(buf, len, "%.0f s", s);
     else if (s < 7200.0)
         snprintf(buf, len, "%.2g min", s / 60.0);
     else if (s < 2.0 * 86400.0)
