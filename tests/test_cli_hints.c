@@ -223,9 +223,8 @@ static void test_help_names_every_plot(void **state)
     fixture *fx = *state;
     assert_int_equal(run_vcsph(fx, (const char *const[]){"--help", NULL}), 0);
     char *out = read_file(fx, "stdout.txt");
-    static const char *const words[] = {"volume error and eta", "energy",     "density",
-                                        "liquid",               "dissipation", "probes",
-                                        "loads"};
+    static const char *const words[] = {"volume error and eta", "energy", "density", "liquid",
+                                        "dissipation",          "probes", "loads"};
     for (size_t k = 0; k < sizeof words / sizeof words[0]; k++) assert_contains(out, words[k]);
     free(out);
 }

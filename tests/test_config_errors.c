@@ -86,8 +86,8 @@ static const bad_case bad_cases[] = {
     BAD("nan", "[case]\nt_end = nan\n", "bad.ini:2: ", "case.t_end = nan"),
     BAD("hex float", "[case]\nt_end = 0x1p-4\n", "bad.ini:2: ", "case.t_end = 0x1p-4",
         "not a finite decimal number"),
-    BAD("hex float in a list", MINIMAL "[motion]\ncenter = 0.5 0x1p-2\n", "bad.ini:11: ",
-        "'0x1p-2' is not a finite decimal number"),
+    BAD("hex float in a list", MINIMAL "[motion]\ncenter = 0.5 0x1p-2\n",
+        "bad.ini:11: ", "'0x1p-2' is not a finite decimal number"),
     BAD("overflowing number", "[case]\nt_end = 1e999\n", "bad.ini:2: ", "case.t_end = 1e999"),
     BAD("negative length", "[case]\nt_end = 1\n[tank]\nlength = -1\n",
         "bad.ini:4: tank.length = -1: must be a length > 0 (m)"),
@@ -137,8 +137,10 @@ static const bad_case bad_cases[] = {
     BAD("pitch in 2D", MINIMAL "[motion]\ntype = pitch\nangle = 0.1\nperiod = 1\n",
         "bad.ini:11: ", "motion.type = pitch", "3D only"),
     BAD("negative angle", MINIMAL "[motion]\nangle = -0.1\n", "bad.ini:11: ", "motion.angle"),
-    BAD("motion file without a table", MINIMAL "[motion]\ntype = sway\namplitude = 0.05\n"
-        "period = 1\nfile = sway.csv\n", "bad.ini:14: ", "motion.file = sway.csv",
+    BAD("motion file without a table",
+        MINIMAL "[motion]\ntype = sway\namplitude = 0.05\n"
+                "period = 1\nfile = sway.csv\n",
+        "bad.ini:14: ", "motion.file = sway.csv",
         "applies only to motion.type = table, and the type is sway"),
     BAD("center with one coordinate", MINIMAL "[motion]\ncenter = 0.5\n",
         "bad.ini:11: ", "motion.center = 0.5", "1 coordinate"),

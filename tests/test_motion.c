@@ -446,10 +446,9 @@ static void test_named_columns(void **state)
     motion_free(&a);
     motion_free(&b);
     motion r;
-    assert_int_equal(
-        motion_from_table(&r, "# a comment\n\nt, roll\n0,0\n1,0.1\n2,0\n3,-0.1\n", 2, err,
-                          sizeof err),
-        0);
+    assert_int_equal(motion_from_table(&r, "# a comment\n\nt, roll\n0,0\n1,0.1\n2,0\n3,-0.1\n", 2,
+                                       err, sizeof err),
+                     0);
     assert_true(r.rotates && r.pos[MOTION_X] == NULL);
     motion_table_columns(&r, columns, sizeof columns);
     assert_string_equal(columns, "t,roll");

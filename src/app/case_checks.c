@@ -6,14 +6,13 @@
 #include <omp.h>
 #include <stdio.h>
 
-/* A harmonic motion (not none, not a table) whose period has fewer than the minimum of steps. */
+/* A periodic motion (dv->omega > 0: not none, not a table) whose period has fewer than the
+ * minimum of steps. */
 static int unresolved_period(const config *cfg, const derived *dv, const char **key, char *why,
                              size_t why_len)
 {
-    bool harmonic = config_motion_translation_axis(cfg->motion) >= 0 ||
-                    config_motion_rotation(cfg->motion) >= 0;
     double steps = cfg->period / dv->dt;
-    if (!harmonic || steps >= CASE_STEPS_PER_PERIOD_MIN) return 0;
+    if (!(dv->omega > 0.0) || steps >= CASE_STEPS_PER_PERIOD_MIN) return 0;
     *key = "motion.period";
     snprintf(why, why_len,
              "a period of %.3g time steps (dt = %.3g s, Eq. 8) is no motion the time integration "

@@ -2,9 +2,9 @@
  * case file's load so that every refusal names the file, line and key: the motion table reads,
  * the derived numbers make a runnable case (derived_problem), and the case is not absurd: a
  * periodic motion of fewer than CASE_STEPS_PER_PERIOD_MIN time steps a period, or a run
- * estimated at more than a day (ESTIMATE_DAY_S) whose tank acceleration exceeds CASE_G_MAX_ABSURD g or
- * whose sound speed exceeds CASE_C0_ABSURD times Eq. (6)'s (a unit error, a typo). --insist
- * runs those all the same. */
+ * estimated at more than a day (ESTIMATE_DAY_S) whose tank acceleration exceeds CASE_G_MAX_ABSURD g
+ * or whose sound speed exceeds CASE_C0_ABSURD times Eq. (6)'s (a unit error, a typo). --insist runs
+ * those all the same. */
 #ifndef VCSPH_CASE_CHECKS_H
 #define VCSPH_CASE_CHECKS_H
 
@@ -19,9 +19,9 @@
 #define CASE_C0_ABSURD            100.0 /* times Eq. (6)'s c0 */
 
 typedef struct {
-    bool insist;       /* --insist: no refusal of an absurd case */
-    derived dv;        /* the derived numbers, once the check has passed */
-    run_estimate est;  /* the run's memory and wall time */
+    bool insist;      /* --insist: no refusal of an absurd case */
+    derived dv;       /* the derived numbers, once the check has passed */
+    run_estimate est; /* the run's memory and wall time */
 } case_check_state;
 
 /* The config_case_check of a run or a check; user is a case_check_state. */

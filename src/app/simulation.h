@@ -13,7 +13,7 @@ typedef struct {
     bool quiet;             /* no terminal output (tests) */
     bool overwrite; /* a fresh run removes an earlier run's files there instead of refusing */
     const struct run_team *team; /* the processes of an MPI run (core/run_team.h), NULL: one */
-    const char *program; /* the command as the user started it (argv[0]), for the hints */
+    const char *program;         /* the command as the user started it (argv[0]), for the hints */
 } run_options;
 
 /* Exit statuses (docs/architecture.md). RUN_INTERRUPTED: SIGTERM or SIGINT stopped the run after a

@@ -333,9 +333,10 @@ static int spline_second_derivatives(const double *t, const double *y, size_t n,
     return 0;
 }
 
-static const char *const channel_names[MOTION_CHANNELS] = {"x", "y", "z", "roll", "pitch", "yaw"};
+/* A table's column names: t, then the channels' in their order. */
 static const char *const column_names[MOTION_CHANNELS + 1] = {"t",    "x",     "y",  "z",
                                                               "roll", "pitch", "yaw"};
+static const char *const *const channel_names = column_names + 1;
 #define COLUMNS_SPELLED "t, then any of x, y, z (m) and roll, pitch, yaw (rad)"
 
 /* The table's columns: channel[k] is the channel of column k + 1 (column 0 is t). */
@@ -362,15 +363,16 @@ static int line_numbers(const char *line, double *v, int room)
 
 /* A header's fields: `t` first, then channel names (exactly as documented, lower case), each
  * at most once. Returns false with a message naming the line and the word otherwise. */
-static bool header_columns(const char *header, table_columns *cols, const char *path,
-                           size_t lineno, char *err, size_t err_len)
+static bool header_columns(const char *header, table_columns *cols, const char *path, size_t lineno,
+                           char *err, size_t err_len)
 {
     char text[4096];
     snprintf(text, sizeof text, "%s", header);
     cols->n = -1; /* t first */
     int seen = 0;
     char *save = NULL;
-    for (char *field = strtok_r(text, ",\r\n", &save); field; field = strtok_r(NULL, ",\r\n", &save)) {
+    for (char *field = strtok_r(text, ",\r\n", &save); field;
+         field = strtok_r(NULL, ",\r\n", &save)) {
         while (isspace((unsigned char)*field)) field++;
         size_t len = strlen(field);
         while (len > 0 && isspace((unsigned char)field[len - 1])) field[--len] = '\0';
@@ -384,9 +386,8 @@ static bool header_columns(const char *header, table_columns *cols, const char *
         else if (c > 0 && (seen & (1 << c)))
             why = "comes twice";
         if (why) {
-            const char *hint = c > MOTION_CHANNELS
-                                   ? word_suggest(field, column_names, MOTION_CHANNELS + 1)
-                                   : NULL;
+            const char *hint =
+                c > MOTION_CHANNELS ? word_suggest(field, column_names, MOTION_CHANNELS + 1) : NULL;
             snprintf(err, err_len, "%s:%zu: motion table header: '%s' %s%s%s%s; the columns are %s",
                      path, lineno, field, why, hint ? " (did you mean '" : "", hint ? hint : "",
                      hint ? "'?)" : "", COLUMNS_SPELLED);
@@ -441,18 +442,22 @@ static int append_knot(motion *mo, size_t *cap, const table_columns *cols, const
     return 0;
 }
 
-/* One data row: exactly the columns' numbers. Returns false with a message otherwise. */
-static bool table_row(const char *line, const table_columns *cols, bool by_position, double *v,
-                      const char *path, size_t lineno, char *err, size_t err_len)
+/* The columns as a header would name them, "t,x,y,roll", into buf. */
+static void spell_columns(const table_columns *cols, char *buf, size_t size)
 {
-    if (line_numbers(line, v, MOTION_CHANNELS + 1) == cols->n + 1) return true;
-    char spelled[96] = "t";
-    for (int k = 0; k < cols->n; k++)
-        snprintf(spelled + strlen(spelled), sizeof spelled - strlen(spelled), ",%s",
-                 channel_names[cols->channel[k]]);
+    size_t used = (size_t)snprintf(buf, size, "t");
+    for (int k = 0; k < cols->n && used < size; k++)
+        used += (size_t)snprintf(buf + used, size - used, ",%s", channel_names[cols->channel[k]]);
+}
+
+/* The message of a data row that does not hold exactly the columns' numbers. */
+static void row_error(const table_columns *cols, bool by_position, const char *path, size_t lineno,
+                      char *err, size_t err_len)
+{
+    char spelled[96];
+    spell_columns(cols, spelled, sizeof spelled);
     snprintf(err, err_len, "%s:%zu: expected %d decimal numbers %s (s, m, rad), as %s", path,
              lineno, cols->n + 1, spelled, by_position ? "the first row has" : "the header names");
-    return false;
 }
 
 /* CSV whose first line (after blank and `#` lines) is a header, t then any of x,y,z (m) and
@@ -477,21 +482,22 @@ static int read_table(motion *mo, const char *path, const char *text, int dim, c
         while (isspace((unsigned char)*p)) p++;
         if (*p == '#' || *p == '\0') continue;
         double v[MOTION_CHANNELS + 1];
-        if (first) {
+        int count = line_numbers(line, v, MOTION_CHANNELS + 1);
+        if (first) { /* the header, or the first row of a table without one */
             first = false;
-            int count = line_numbers(line, v, MOTION_CHANNELS + 1);
             mo->table_by_position = count > 0;
             bool read = count > 0 ? positional_columns(count, &cols, path, lineno, err, err_len)
                                   : header_columns(line, &cols, path, lineno, err, err_len);
             if (!read) status = 2;
-            if (count <= 0) continue;
+            if (!read || count <= 0) continue;
         }
-        if (status == 0 && !table_row(line, &cols, mo->table_by_position, v, path, lineno, err, err_len))
+        if (count != cols.n + 1) {
+            row_error(&cols, mo->table_by_position, path, lineno, err, err_len);
             status = 2;
-        else if (status == 0 && mo->n_knots > 0 && !(v[0] > mo->t[mo->n_knots - 1])) {
+        } else if (mo->n_knots > 0 && !(v[0] > mo->t[mo->n_knots - 1])) {
             snprintf(err, err_len, "%s:%zu: times must increase", path, lineno);
             status = 2;
-        } else if (status == 0 && append_knot(mo, &cap, &cols, v)) {
+        } else if (append_knot(mo, &cap, &cols, v)) {
             snprintf(err, err_len, "%s: out of memory", path);
             status = 2;
         }
@@ -522,9 +528,10 @@ static int read_table(motion *mo, const char *path, const char *text, int dim, c
 
 void motion_table_columns(const motion *mo, char *buf, size_t size)
 {
-    size_t used = (size_t)snprintf(buf, size, "t");
-    for (int c = 0; c < MOTION_CHANNELS && used < size; c++)
-        if (mo->pos[c]) used += (size_t)snprintf(buf + used, size - used, ",%s", channel_names[c]);
+    table_columns cols = {0, {0}};
+    for (int c = 0; c < MOTION_CHANNELS; c++)
+        if (mo->pos[c]) cols.channel[cols.n++] = c;
+    spell_columns(&cols, buf, size);
 }
 
 /* Largest distance from the rotation axis's point to a corner of the tank. */

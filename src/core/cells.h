@@ -160,7 +160,7 @@ int cells_bin(cell_grid *g, double *const x[DIM], size_t n);
 void cells_sort_order(const cell_grid *g, size_t n, uint32_t *order);
 /* The row length neighbours_build gives rows whose longest has `longest` entries: a
  * sixteenth more, so that the rows a step later, whose particles have moved by less than the
- * skin, rarely overflow (on issue 22's 2D case and INM2 3D at N = 20, only the first build
+ * skin, rarely overflow (on INM1 at N = 100 and INM2 3D at N = 20, only the first build
  * did). Not rounded to the SIMD scan's blocks of eight: the scan stores a whole block only
  * where the row has room for it, and appends the last few entries one by one. */
 static inline size_t neighbours_row_room(int32_t longest)

@@ -83,8 +83,8 @@ static const char *const sections[] = {"case",  "tank",     "liquid", "fluid", "
 /* What reading a case keeps beside the config: how many coordinates the pressure points were
  * given with, checked against case.dim once dim is final. */
 typedef struct {
-    int point_coords;         /* 0 if no point */
-    config_case_check check;  /* config_load_checked's, NULL for none */
+    int point_coords;        /* 0 if no point */
+    config_case_check check; /* config_load_checked's, NULL for none */
     void *check_user;
 } case_reading;
 
@@ -102,8 +102,8 @@ static bool list_number(const ini_key *k, const char **p, const char *seps, doub
         if (len == 0)
             snprintf(why, n, "unexpected '%c'; must be %s", **p, k->allowed);
         else
-            snprintf(why, n, "'%.*s' is not a finite decimal number; must be %s", len > 40 ? 40 : len, *p,
-                     k->allowed);
+            snprintf(why, n, "'%.*s' is not a finite decimal number; must be %s",
+                     len > 40 ? 40 : len, *p, k->allowed);
         return false;
     }
     *p = ini_skip_space(end);

@@ -13,8 +13,7 @@ static inline double decimal_strtod(const char *s, char **end)
     const char *p = s;
     while (isspace((unsigned char)*p)) p++;
     if (*p == '+' || *p == '-') p++;
-    int starts_decimal = isdigit((unsigned char)*p) ||
-                         (*p == '.' && isdigit((unsigned char)p[1]));
+    int starts_decimal = isdigit((unsigned char)*p) || (*p == '.' && isdigit((unsigned char)p[1]));
     int hex = p[0] == '0' && (p[1] == 'x' || p[1] == 'X');
     if (!starts_decimal || hex) {
         *end = (char *)s;

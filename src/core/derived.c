@@ -216,8 +216,7 @@ static const char *const axis_name[3] = {"x", "y", "z"};
 static const char *const axis_keys[3] = {"liquid.length or numerics.resolution",
                                          "numerics.resolution",
                                          "tank.width (the liquid fills it) or numerics.resolution"};
-static const char *const axis_key[3] = {"numerics.resolution", "numerics.resolution",
-                                        "tank.width"};
+static const char *const axis_key[3] = {"numerics.resolution", "numerics.resolution", "tank.width"};
 
 static double liquid_extent(const config *cfg, int d)
 {

@@ -35,7 +35,7 @@ enum {
 /* The per-step fields that only weigh a correction term (the density gradient and the
  * diffusion coefficient of Eq. (5), the eddy viscosity, the shifting velocity of Eq. (7), the
  * volume correction's mismatch) are held in single precision: every wall image holds them too,
- * and in a narrow 3D tank the images outnumber the fluid (issue 22's bytes per particle). Each
+ * and in a narrow 3D tank the images outnumber the fluid. Each
  * is computed in double and rounded once when stored (a relative 6e-8, far below the
  * discretisation's error in these terms); the pair sums that read them stay in double, and
  * every pair form that reads them is symmetric in i and j as before, so the mass and momentum
@@ -193,7 +193,7 @@ static inline size_t particle_source_of(const particles *p, size_t j)
  * particle's own; a wall image's no-slip image, its source's velocity reversed (the walls are
  * at rest in the tank frame), or its free-slip image, the mirrored velocity the image holds.
  * Read through the source rather than held by each image: 24 bytes an image less in 3D, and
- * only the rows that reach a wall ask (issue 22). */
+ * only the rows that reach a wall ask. */
 static inline vec particle_viscous_velocity(const particles *p, size_t j)
 {
     if (j < particles_images_begin(p) || !p->no_slip_images) return vec_load(p->u, j);

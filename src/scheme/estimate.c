@@ -60,19 +60,16 @@ static void estimate_seconds(const config *cfg, const derived *dv, run_estimate 
     /* the finest interval a step lands on sets the extra steps */
     double finest = cfg->t_end;
     const double landing[] = {cfg->timeseries_every, cfg->snapshot_every,
-                              config_motion_translation_axis(cfg->motion) >= 0 ||
-                                      config_motion_rotation(cfg->motion) >= 0
-                                  ? cfg->period
-                                  : 0.0};
+                              dv->omega > 0.0 ? cfg->period : 0.0};
     for (int k = 0; k < 3; k++)
         if (landing[k] > 0.0) finest = fmin(finest, landing[k]);
     e->steps = cfg->t_end / dv->dt + 0.5 * count_of(cfg->t_end, finest);
-    double rows = cfg->timeseries_every > 0.0 ? count_of(cfg->t_end, cfg->timeseries_every)
-                                              : e->steps;
-    double output_us = rows * (ROW_US + ROW_US_PARTICLE * n) +
-                       count_of(cfg->t_end, cfg->snapshot_every) *
-                           (SNAPSHOT_US + SNAPSHOT_US_PARTICLE * n) +
-                       count_of(cfg->t_end, cfg->image_every) * IMAGE_US;
+    double rows =
+        cfg->timeseries_every > 0.0 ? count_of(cfg->t_end, cfg->timeseries_every) : e->steps;
+    double output_us =
+        rows * (ROW_US + ROW_US_PARTICLE * n) +
+        count_of(cfg->t_end, cfg->snapshot_every) * (SNAPSHOT_US + SNAPSHOT_US_PARTICLE * n) +
+        count_of(cfg->t_end, cfg->image_every) * IMAGE_US;
     e->output_seconds = 1e-6 * (output_us + START_US + START_US_PARTICLE * n);
     e->seconds = 1e-6 * e->steps * step_1 / e->speedup + e->output_seconds;
 }
