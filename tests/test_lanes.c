@@ -17,6 +17,7 @@
 #include <cmocka.h>
 
 #include "disordered_block.h"
+#include "test_filter.h"
 
 /* rates of n particles, one array per integrated component */
 typedef struct {
@@ -144,8 +145,9 @@ static void test_steps_with_lanes(void **state)
     steps_with_lanes_give_the_scalar_bits(*(const int *)*state);
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
+    test_filter_args(argc, argv);
     static int four = 4, eight = 8;
     const struct CMUnitTest tests[] = {
         {"test_rhs_in_4_lanes", test_rhs_lanes, NULL, NULL, &four},

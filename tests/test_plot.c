@@ -21,6 +21,7 @@
 
 #include "png_read.h"
 #include "temp_dir.h"
+#include "test_filter.h"
 #include "vcsph_child.h"
 
 extern char **environ;
@@ -187,7 +188,7 @@ static const char tiny_sway[] = "[case]\n"
                                 "[output]\n"
                                 "timeseries_every = 0.01\n";
 
-static void test_plot_real_run(void **state)
+static void test_gnuplot_real_run(void **state)
 {
     const char *dir = ((temp_fixture *)*state)->dir;
     if (!gnuplot_installed()) skip();
@@ -282,7 +283,7 @@ static const char *const every_plot[] = {"volume.png", "energy.png", "density.pn
 
 /* Without case.ini, in a folder whose name needs quoting in a gnuplot script (the script
  * refers to its data by relative paths, so no name reaches gnuplot but in a title). */
-static void test_plot_every_file_without_case(void **state)
+static void test_gnuplot_every_file_without_case(void **state)
 {
     const char *dir = ((temp_fixture *)*state)->dir;
     if (!gnuplot_installed()) skip();
@@ -307,7 +308,7 @@ static void test_plot_every_file_without_case(void **state)
 
 /* A case.ini with a decaying motion and a measured dissipation; its motion table does not
  * exist (plots do not need the motion); no events, a probes.csv with a header only. */
-static void test_plot_with_case(void **state)
+static void test_gnuplot_with_case(void **state)
 {
     const char *dir = ((temp_fixture *)*state)->dir;
     if (!gnuplot_installed()) skip();
@@ -383,12 +384,13 @@ static void test_plot_without_gnuplot(void **state)
     free(err);
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
+    test_filter_args(argc, argv);
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test_setup_teardown(test_plot_real_run, setup, teardown),
-        cmocka_unit_test_setup_teardown(test_plot_every_file_without_case, setup, teardown),
-        cmocka_unit_test_setup_teardown(test_plot_with_case, setup, teardown),
+        cmocka_unit_test_setup_teardown(test_gnuplot_real_run, setup, teardown),
+        cmocka_unit_test_setup_teardown(test_gnuplot_every_file_without_case, setup, teardown),
+        cmocka_unit_test_setup_teardown(test_gnuplot_with_case, setup, teardown),
         cmocka_unit_test_setup_teardown(test_plot_bad_input, setup, teardown),
         cmocka_unit_test_setup_teardown(test_plot_without_gnuplot, setup, teardown),
     };

@@ -28,6 +28,7 @@
 #include "io/snapshot.h"
 
 #include "snapshot_sample.h"
+#include "test_filter.h"
 
 /* ---------------------------------------------------------------------------------------- */
 /* snapshot_write_xdmf                                                                       */
@@ -334,8 +335,9 @@ static void test_xdmf_well_formed(void **state)
     }
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
+    test_filter_args(argc, argv);
     const struct CMUnitTest tests[] = {
         cmocka_unit_test_setup_teardown(test_xdmf_2d, setup, teardown),
         cmocka_unit_test_setup_teardown(test_xdmf_3d, setup, teardown),
