@@ -2,9 +2,13 @@
  * a particle of S_F with lambda < 0.1 (a drop or a thin jet) gets p = 0 and rho = rho0, its
  * volume m / rho0, exactly; a particle of S_F at lambda = 0.1 and an interior particle at a
  * small lambda keep their values. model.edbc = true acts always, false never, with-eta0 only in
- * the eta control's eta = 0 regime; n_edbc counts the particles it reset. */
+ * the eta control's eta = 0 regime; n_edbc counts the particles it reset. Through a step's
+ * preparation (solver_prepare's passes), a drop beside a wall is reset and the wall's image of
+ * it carries the reset state: the pass driver refreshes the images after the passes that change
+ * their sources. */
 #include "diag/freesurface.h"
 #include "scheme/control.h"
+#include "boundary/tank.h"
 #include "scheme/solver.h"
 
 #include <setjmp.h>
@@ -98,8 +102,54 @@ static void test_edbc_modes(void **state)
     assert_int_equal(edbc_on_three(EDBC_WITH_ETA0, false), 0);
 }
 
+/* One particle of the lattice moved up beside the left wall, far from the liquid (a drop), 2 %
+ * compressed: solver_prepare's passes reset it (p = 0, rho = rho0) and its wall images hold its
+ * state as tank_refresh_ghosts makes it, bit for bit. */
+static void test_edbc_reaches_the_wall_images(void **state)
+{
+    (void)state;
+    config cfg;
+    char err[1024], dim[32];
+    snprintf(dim, sizeof dim, "case.dim=%d", DIM);
+    const char *overrides[] = {dim};
+    if (config_load_string(&cfg, tank_case, "test", overrides, 1, err, sizeof err))
+        fail_msg("%s", err);
+    cfg.edbc = EDBC_ON;
+    solver s;
+    if (solver_init(&s, &cfg, err, sizeof err)) fail_msg("%s", err);
+    particles *p = &s.p;
+    double rho0 = s.pp.rho0, dr = s.dv.dr;
+    p->x[0][0] = 0.4 * dr; /* its image across x = 0 is 0.8 dr away */
+    p->x[1][0] = 0.2;      /* 0.1 m above the liquid: no neighbour within 2h = 0.025 m */
+    p->rho[0] = 1.02 * rho0;
+    assert_int_equal(solver_prepare(&s, cfg.t_end), 0);
+    assert_int_equal(s.n_edbc, 1);
+    size_t drop = p->n_fluid;
+    for (size_t i = 0; i < p->n_fluid; i++)
+        if (p->x[1][i] > 0.15) drop = i;
+    assert_true(drop < p->n_fluid);
+    assert_true(p->rho[drop] == rho0 && p->p[drop] == 0.0);
+    size_t n_images = 0;
+    double *kept[] = {p->p, p->rho, p->vol};
+    double before[3][64];
+    size_t images[64];
+    for (size_t g = particles_images_begin(p); g < p->n_total; g++)
+        if ((size_t)p->ghost_source[g - p->n_fluid] == drop && n_images < 64)
+            images[n_images++] = g;
+    assert_true(n_images >= 1);
+    for (size_t k = 0; k < n_images; k++)
+        for (int f = 0; f < 3; f++) before[f][k] = kept[f][images[k]];
+    tank_frame frame = solver_frame(&s, s.t);
+    tank_refresh_ghosts(p, &frame, rho0, s.pp.c0);
+    for (size_t k = 0; k < n_images; k++)
+        for (int f = 0; f < 3; f++) assert_true(before[f][k] == kept[f][images[k]]);
+    assert_true(p->p[images[0]] == 0.0); /* beside a vertical wall: no hydrostatic step */
+    solver_free(&s);
+}
+
 int main(void)
 {
-    const struct CMUnitTest tests[] = {cmocka_unit_test(test_edbc_modes)};
+    const struct CMUnitTest tests[] = {cmocka_unit_test(test_edbc_modes),
+                                       cmocka_unit_test(test_edbc_reaches_the_wall_images)};
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
