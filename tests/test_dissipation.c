@@ -6,7 +6,7 @@
  *   per-period losses e_k fall by exp(-4 nu k^2 T) from one period to the next.
  * - A heaving tank whose surface stays flat (SAP's first periods, and SAP at a thirtieth of
  *   its acceleration, below the parametric threshold) dissipates little, but never less than
- *   nothing: every period's e_diss >= -1e-5 dW, the issue's bound on the budget's accuracy
+ *   nothing: every period's e_diss >= -1e-5 dW, a bound on the budget's accuracy
  *   (docs/energy.md). The potential energy of the particles' moves beyond the flow is booked
  *   apart (work_moves); counted as dissipation, the shifting's moves read -2e-3 dW below the
  *   threshold. With surface tension counted through the measured area instead of its force's work,
@@ -64,7 +64,8 @@ static void test_rest_dissipates_nothing(void **state)
 
 /* The first sloshing mode of a 1 m tank with 0.5 m of liquid, k = pi/L, excited by two
  * periods of sway at its own period, then left alone. nu = 0.01 m^2/s: Re = sqrt(gH) H / nu
- * = 110, nu k^2 / omega = 0.019 (weak damping, where the linear rate holds). */
+ * = 110, nu k^2 / omega = 0.019 (weak damping, where the linear rate holds). Measured: the
+ * rate 5.4 % below 4 nu k^2; the bound is 15 % (2.8x). */
 static void test_standing_wave_decay(void **state)
 {
     (void)state;
@@ -96,7 +97,7 @@ static void test_standing_wave_decay(void **state)
     double rate = -least_squares_slope(t, ln_e, n, NULL), theory = 4.0 * nu * k * k;
     printf("energy decay rate %.4f 1/s, linear theory 4 nu k^2 = %.4f 1/s (%+.1f %%)\n", rate,
            theory, 100.0 * (rate / theory - 1.0));
-    assert_close(rate / theory, 1.0, 0.2); /* the 20 % */
+    assert_close(rate / theory, 1.0, 0.15);
     table_free(&d);
     table_free(&ts);
 }

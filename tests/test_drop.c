@@ -2,8 +2,10 @@
  * the 24 x 16 mm rectangle of the outside check, and the 1.5 : 1 ellipse of the same area,
  * 2D, weightless, sigma = 0.0727 N/m, nu = 1e-6, at N = 30 (R / dr = 20.7) over 0.8 s, 2.3
  * periods of Lamb's mode 2, omega^2 = 6 sigma / (rho R^3) (Lamb 1932, art. 275, in 2D):
- * - angular momentum about the centre of mass: |L| / (M R u_max) below 1e-3, u_max the
- *   largest speed of the run (a free body: nothing exerts a moment on it);
+ * - angular momentum about the centre of mass: |L| / (M R u_max), u_max the largest speed of
+ *   the run, near zero (a free body: nothing exerts a moment on it; what is left comes from
+ *   the particles' moves of the shifting and the ALE terms), below angular_bound's 3x the
+ *   measured figure;
  * - the mode-2 period from the zero crossings of I_xx - I_yy, the second moments of the
  *   particle positions about their centre (which the drop's rotation would not fool, as it
  *   fools the width), within 5 % of the period of the same shape computed independently by
@@ -154,6 +156,17 @@ static double ellipse_perimeter(double a, double b)
     return M_PI * (a + b) * (1.0 + 3.0 * h / (10.0 + sqrt(4.0 - 3.0 * h)));
 }
 
+/* The bound on |L| / (M R u_max), 3x what the run of `shape` measured: at N = 30 over 0.8 s
+ * (this test) 4.0e-5 for the rectangle and 2.9e-6 for the ellipse; at N = 40 over 1.5 s
+ * (tools/validate-drop) 4.4e-5 and 1.26e-4, the ellipse's growing along the run. Any other run
+ * from the command line takes the larger. */
+static double angular_bound(const char *shape)
+{
+    bool own = resolution == 30 && t_end == 0.8, box = strcmp(shape, "box") == 0;
+    if (own) return box ? 1.2e-4 : 9e-6;
+    return box ? 1.3e-4 : 3.8e-4;
+}
+
 static void check_drop(const char *shape, const char *reference, double length, double height,
                        double perimeter, const char *scheme)
 {
@@ -191,7 +204,7 @@ static void check_drop(const char *shape, const char *reference, double length, 
            shape, scheme, radius / s.dv.dr, angular, period, c.crossings - 1, expected,
            100.0 * (period / expected - 1.0), lamb, 100.0 * (period / lamb - 1.0),
            100.0 * worst_eps, free_lo, free_hi, free0, umax);
-    assert_true(angular < 1e-3);
+    assert_true(angular < angular_bound(shape));
     assert_close(period / expected, 1.0, 0.05);
     assert_true(worst_eps < 0.005);
     /* The outside check's bound: the count within 10 % of its value at 0.1 s. The ellipse cut

@@ -1,7 +1,6 @@
 /* Tests of loads.csv (docs/loads.md): the force the liquid exerts on the tank, from the wall
  * interactions of the momentum equation, against statics, a quasi-static sway and the
- * liquid's momentum balance. The tolerances are the issue's physical ones (0.5 %, 1 %, 2 %);
- * why each run meets them is said at each test. */
+ * liquid's momentum balance. Each test gives the figure it measures and its bound beside it. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -9,6 +8,7 @@
 
 #include <cmocka.h>
 
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 
@@ -19,16 +19,18 @@
 /* A 0.4 x 0.3 m tank with 0.1 m of water; the motion section follows. */
 #define TANK "[case]\nname = loads\n[tank]\nlength = 0.4\nheight = 0.3\n[liquid]\nheight = 0.1\n"
 
-/* Runs TANK at resolution N + `rest` and reads its loads.csv into l. */
+/* Runs TANK at resolution N + `rest` and reads its loads.csv into l, which must have a row for
+ * every row of the time series. */
 static void run_loads(int n, const char *rest, table *l)
 {
     char text[1024], dir[64], path[128];
     snprintf(text, sizeof text, "%s[numerics]\nresolution = %d\n%s", TANK, n, rest);
     table series;
     run_case_text(text, NULL, 0, dir, &series);
-    table_free(&series);
     snprintf(path, sizeof path, "%s/loads.csv", dir);
     assert_int_equal(table_read(l, path), 0);
+    assert_int_equal(l->n_rows, series.n_rows);
+    table_free(&series);
 }
 
 /* The still tank and the slow sway use a viscous liquid, nu = 1e-2 m^2/s: at rest or in rigid
@@ -41,8 +43,10 @@ static void run_loads(int n, const char *rest, table *l)
  * sideways. The weakly compressible liquid settles from its initial state with acoustic
  * oscillations of its centre of mass, which the initial state's mismatch with the discrete
  * hydrostatics drives: they move the bottom force by 0.37 % at N = 12 (0.67 % with water's
- * viscosity), inside the 0.5 % of the check. The left and right walls' forces cancel but for
- * round-off: a few eps of the weight times the number of particles. */
+ * viscosity); the bound is 0.5 % (1.35x). The left and right walls' forces cancel but for
+ * round-off: a sum over the 576 particles of terms of the weight's size, within
+ * 576 DBL_EPSILON = 1.3e-13 of it (measured 3.3e-15). The series has a row every 5 ms over
+ * 0.3 s: 61. */
 static void test_still_tank_carries_the_weight(void **state)
 {
     (void)state;
@@ -51,19 +55,22 @@ static void test_still_tank_carries_the_weight(void **state)
     const double *fx = table_column(&l, "fx"), *fy = table_column(&l, "fy"),
                  *by = table_column(&l, "by");
     assert_true(l.n_rows == 61);
-    double worst = 0.0;
+    double worst = 0.0, side = 0.0;
     for (size_t k = 0; k < l.n_rows; k++) {
         assert_close(fy[k], by[k], 0.005 * fabs(by[k]));
-        assert_true(fabs(fx[k]) < 1e-10 * fabs(by[k]));
+        assert_true(fabs(fx[k]) < 576.0 * DBL_EPSILON * fabs(by[k]));
         worst = fmax(worst, fabs(fy[k] / by[k] - 1.0));
+        side = fmax(side, fabs(fx[k] / by[k]));
     }
+    print_message("still tank: sideways force %.2e of the weight\n", side);
     print_message("still tank: bottom force within %.3f %% of the weight (%.6g N/m)\n",
                   100.0 * worst, -by[0]);
     table_free(&l);
 }
 
-/* The same in 3D (0.3 m wide, N = 8, 0.05 s): the weight on the bottom within 0.5 % (0.23 %
- * measured), nothing along x or z but round-off. */
+/* The same in 3D (0.3 m wide, N = 8, 0.05 s, 6144 particles): the weight on the bottom within
+ * 0.5 % (0.23 % measured, 2.1x), nothing along x or z but round-off, within
+ * 6144 DBL_EPSILON = 1.4e-12 of it (measured 5.4e-16); a row every 5 ms over 0.05 s: 11. */
 static void test_still_tank_3d(void **state)
 {
     (void)state;
@@ -75,9 +82,19 @@ static void test_still_tank_3d(void **state)
     const double *fx = table_column(&l, "fx"), *fy = table_column(&l, "fy"),
                  *fz = table_column(&l, "fz"), *by = table_column(&l, "by");
     assert_non_null(fz);
+    assert_int_equal(l.n_rows, 11);
+    double worst = 0.0, side = 0.0;
+    for (size_t k = 0; k < l.n_rows; k++) {
+        worst = fmax(worst, fabs(fy[k] / by[k] - 1.0));
+        side = fmax(side, fmax(fabs(fx[k]), fabs(fz[k])) / fabs(by[k]));
+    }
+    print_message("still tank 3D: %zu rows, bottom force within %.3f %% of the weight, sideways "
+                  "%.2e of it\n",
+                  l.n_rows, 100.0 * worst, side);
     for (size_t k = 0; k < l.n_rows; k++) {
         assert_close(fy[k], by[k], 0.005 * fabs(by[k]));
-        assert_true(fabs(fx[k]) < 1e-10 * fabs(by[k]) && fabs(fz[k]) < 1e-10 * fabs(by[k]));
+        double round_off = 6144.0 * DBL_EPSILON * fabs(by[k]);
+        assert_true(fabs(fx[k]) < round_off && fabs(fz[k]) < round_off);
     }
     table_free(&l);
 }
@@ -88,7 +105,7 @@ static void test_still_tank_3d(void **state)
  * force (the acceleration's initial slope A w^3 over sigma_1), which the viscosity damps at
  * 2 nu k^2 = 1.2 /s: from t = 1 s on, what is left and the quasi-static response's own
  * (w / sigma_1)^2 = 5 % of the horizontal force (a0 / g = 5 % of |b|) stay within 0.2 % of
- * |b|, inside the 1 % of the check. */
+ * |b| (measured 0.170 %); the bound is 0.5 % (2.9x). */
 static void test_slow_sway_moves_the_liquid_rigidly(void **state)
 {
     (void)state;
@@ -104,7 +121,7 @@ static void test_slow_sway_moves_the_liquid_rigidly(void **state)
     for (size_t k = 0; k < l.n_rows; k++) {
         if (t[k] < 1.0) continue;
         double b = hypot(bx[k], by[k]), e = hypot(fx[k] - bx[k], fy[k] - by[k]);
-        assert_true(e <= 0.01 * b);
+        assert_true(e <= 0.005 * b);
         worst = fmax(worst, e / b);
         a0_max = fmax(a0_max, fabs(bx[k] / by[k]) * 9.81);
     }
@@ -137,10 +154,10 @@ static double windowed_balance(const table *l, size_t window)
  * windows of 0.02 s, longer than the acoustic round trip over the depth (2 H / c0 = 0.014 s):
  * the momentum change over the window against the trapezoidal integral of b - F. The ALE
  * terms of delta-plus-ALE are not pairwise antisymmetric and variable masses carry momentum,
- * which the wall force does not count; the check's 2 % of the force's amplitude bounds both.
- * A sway, then a roll of 2 degrees about the bottom centre, whose body force b holds the
- * turning gravity and the Euler, centrifugal and Coriolis forces. Measured: 0.46 % and
- * 0.35 %. */
+ * which the wall force does not count. A sway, then a roll of 2 degrees about the bottom
+ * centre, whose body force b holds the turning gravity and the Euler, centrifugal and
+ * Coriolis forces. Measured: 0.48 % and 0.29 % of the force's amplitude; the bound is
+ * 1.4 % (2.9x the sway's). */
 static void check_momentum_balance(const char *name, const char *motion)
 {
     char rest[512];
@@ -153,7 +170,7 @@ static void check_momentum_balance(const char *name, const char *motion)
     for (size_t k = 0; k < l.n_rows; k++) amplitude = fmax(amplitude, fabs(fx[k]));
     double worst = windowed_balance(&l, 10);
     assert_true(amplitude > 10.0); /* it does slosh: M A w^2 of the sway alone is 1.6 N/m */
-    assert_true(worst <= 0.02 * amplitude);
+    assert_true(worst <= 0.014 * amplitude);
     print_message("%s: mean |F - (b - dP/dt)| over 0.02 s <= %.2f %% of max |fx| = %.4g N/m\n",
                   name, 100.0 * worst / amplitude, amplitude);
     table_free(&l);

@@ -1,11 +1,15 @@
-/* probes.csv in a still tank (2D and 3D): a wave gauge reads the filling height H within
- * dr/4 (the issue's figure; the liquid fraction integrated along the gauge's line gives the
- * liquid volume over the column, H up to the hydrostatic compression g H / (2 c0^2) ~ 0.5 %),
- * and a pressure probe at depth d reads rho0 g d within 3 % (the Shepard interpolation is
- * exact for the linear hydrostatic field; the rest is the settling of the lattice). Probes in
- * the middle and on a side wall (where the ghosts complete the kernel), and a sensor of 8 cm
- * on the side wall, whose mean over its face of the linear field is the value at its centre
- * (the quadrature's own check: test_sensor). */
+/* probes.csv in a still tank (2D and 3D), at t = 0 and at the end (0.3 s): a wave gauge reads
+ * the filling height H (the liquid fraction integrated along the gauge's line gives the liquid
+ * volume over the column), and a pressure probe at depth d reads rho0 g d (the Shepard
+ * interpolation is exact for the linear hydrostatic field; the rest is the settling of the
+ * lattice). Probes in the middle and on a side wall (where the ghosts complete the kernel), and
+ * a sensor of 8 cm on the side wall, whose mean over its face of the linear field is the value
+ * at its centre (the quadrature's own check: test_sensor). The bounds are about 3x the
+ * measured worst (a run at rest, the same on every machine up to the round-off of its libm):
+ * - gauges: measured 0.0098 dr (2D, N = 20) and 0.0156 dr (3D, N = 10), the same at t = 0 as
+ *   at the end: the integration's own error; bounds 0.025 dr and 0.045 dr;
+ * - pressure: measured +0.58 % (2D) and +0.38 % (3D) at the end, 0.004 % at t = 0; bounds
+ *   1.5 % and 1.1 %. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -19,7 +23,7 @@
 
 #define DEPTH_H 0.35
 
-static void check_still_tank(int dim, int resolution)
+static void check_still_tank(int dim, int resolution, double gauge_tol, double p_tol)
 {
     char text[1024];
     const char *z = dim == 3 ? " 0.05" : "";
@@ -45,13 +49,13 @@ static void check_still_tank(int dim, int resolution)
         printf("%dD, t = %g s:", dim, pr.column[0][row]);
         for (int k = 1; k <= 4; k++) {
             double gauge = pr.column[k][row];
-            printf(" gauge %.5f m (H %+.2f dr)", gauge, (gauge - DEPTH_H) / dr);
-            assert_close(gauge, DEPTH_H, 0.25 * dr);
+            printf(" gauge %.5f m (H %+.4f dr)", gauge, (gauge - DEPTH_H) / dr);
+            assert_close(gauge, DEPTH_H, gauge_tol * dr);
         }
         for (int k = 0; k < 4; k++) {
             double p = pr.column[5 + k][row], expected = rho0 * g * (DEPTH_H - probe_y[k]);
-            printf(" p %.1f Pa (%+.2f %%)", p, 100.0 * (p / expected - 1.0));
-            assert_close(p / expected, 1.0, 0.03);
+            printf(" p %.1f Pa (%+.3f %%)", p, 100.0 * (p / expected - 1.0));
+            assert_close(p / expected, 1.0, p_tol);
         }
         printf("\n");
     }
@@ -62,13 +66,13 @@ static void check_still_tank(int dim, int resolution)
 static void test_still_tank_2d(void **state)
 {
     (void)state;
-    check_still_tank(2, 20);
+    check_still_tank(2, 20, 0.025, 0.015);
 }
 
 static void test_still_tank_3d(void **state)
 {
     (void)state;
-    check_still_tank(3, 10);
+    check_still_tank(3, 10, 0.045, 0.011);
 }
 
 int main(void)

@@ -1,10 +1,12 @@
 /* Integration: a tank at rest with delta-SPH (N = 20, 1 s, 2D), and with the default scheme's
  * shifting and volume correction (N = 10, 10 s). The hydrostatic initial state
- * of sec. 2.1 must stay at rest: the figures asserted here are those of the issue, with their
- * reasons beside them. Also: the run is byte-identical on 1 and 2 threads (docs/architecture.md).
+ * of sec. 2.1 must stay at rest: each figure asserted is its measured value times a stated
+ * margin, or a round-off bound, both given beside it. Also: the run is byte-identical on 1 and 2
+ * threads (docs/architecture.md).
  */
 #include "app/simulation.h"
 
+#include <float.h>
 #include <hdf5.h>
 #include <omp.h>
 #include <setjmp.h>
@@ -76,9 +78,15 @@ static int teardown(void **state)
     return temp_dir_remove(group_dir);
 }
 
-/* max |u| < 0.05 sqrt(g H): the spurious currents of the ghost-wall corners stay small;
- * centre of mass within 1 % of H/2; mass exact (constant masses, round-off of a sum of
- * 800 terms); energy budget: ediss >= 0 (dissipation only) and |ediss| < 1 % of M_L g H. */
+/* The settling of the start, the spurious currents of the ghost-wall corners and the
+ * dissipation stay at their measured size, each bound about 3x the figure measured here (a
+ * run at rest, the same on every machine up to the round-off of its libm):
+ * - max |u| < 3e-3 m/s (measured 1.07e-3 m/s, 0.076 % of sqrt(g H));
+ * - centre of mass within 2.5e-4 m of H/2 (measured 8.5e-5 m);
+ * - energy budget: ediss >= 0 (dissipation only) and |ediss| < 6e-4 J (measured 2.12e-4 J,
+ *   1.35e-6 of M_L g H = 157 J);
+ * - mass exact: constant masses, |mass_err| within the round-off of a sum of 800 terms,
+ *   800 DBL_EPSILON = 1.8e-13 (measured 5.9e-15). */
 static void test_rest_and_budget(void **state)
 {
     (void)state;
@@ -90,24 +98,26 @@ static void test_rest_and_budget(void **state)
     const double *umax = table_column(&t, "umax"), *com_y = table_column(&t, "com_y");
     const double *mass_err = table_column(&t, "mass_err"), *ediss = table_column(&t, "ediss");
     const double *time = table_column(&t, "t");
-    double worst_u = 0.0, worst_com = 0.0, min_ediss = INFINITY, max_ediss = -INFINITY;
+    double worst_u = 0.0, worst_com = 0.0, worst_mass = 0.0, min_ediss = INFINITY;
+    double max_ediss = -INFINITY;
     for (size_t r = 0; r < t.n_rows; r++) {
         worst_u = fmax(worst_u, umax[r]);
         worst_com = fmax(worst_com, fabs(com_y[r] - depth / 2));
-        assert_true(fabs(mass_err[r]) < 1e-12);
+        worst_mass = fmax(worst_mass, fabs(mass_err[r]));
+        assert_true(fabs(mass_err[r]) < 800.0 * DBL_EPSILON);
         min_ediss = fmin(min_ediss, ediss[r]);
         max_ediss = fmax(max_ediss, fabs(ediss[r]));
     }
     double scale = rho0 * length * depth * gravity * depth; /* M_L g H */
-    printf("still tank: max|u| = %.3g m/s (limit %.3g), max|com_y - H/2| = %.3g m, "
-           "ediss in [%.3g, %.3g] J (1%% of M_L g H = %.3g J), t_end = %g s\n",
-           worst_u, 0.05 * sqrt(gravity * depth), worst_com, min_ediss, max_ediss, 0.01 * scale,
-           time[t.n_rows - 1]);
+    printf("still tank: max|u| = %.3g m/s (%.2g sqrt(g H)), max|com_y - H/2| = %.3g m, "
+           "ediss in [%.3g, %.3g] J (%.2g M_L g H), max|mass_err| = %.3g, t_end = %g s\n",
+           worst_u, worst_u / sqrt(gravity * depth), worst_com, min_ediss, max_ediss,
+           max_ediss / scale, worst_mass, time[t.n_rows - 1]);
     assert_close(time[t.n_rows - 1], 1.0, 1e-12);
-    assert_true(worst_u < 0.05 * sqrt(gravity * depth));
-    assert_true(worst_com < 0.01 * depth / 2);
+    assert_true(worst_u < 3e-3);
+    assert_true(worst_com < 2.5e-4);
     assert_true(min_ediss >= 0.0);
-    assert_true(max_ediss < 0.01 * scale);
+    assert_true(max_ediss < 6e-4);
     table_free(&t);
 }
 
@@ -126,7 +136,7 @@ static double *read_dataset(hid_t file, const char *name, size_t *n)
 }
 
 /* After settling (last snapshot, t = 1 s): the pressure of the bottom layer against
- * rho0 g (H - y), within 2 %; read back through the HDF5 library. */
+ * rho0 g (H - y), within 1.2 % (measured +0.44 %, 2.7x); read back through the HDF5 library. */
 static void test_hydrostatic_pressure(void **state)
 {
     (void)state;
@@ -151,7 +161,7 @@ static void test_hydrostatic_pressure(void **state)
         sum_expected += rho0 * gravity * (depth - y);
     }
     printf("still tank: bottom-layer pressure %.5g of hydrostatic\n", sum_p / sum_expected);
-    assert_close(sum_p / sum_expected, 1.0, 0.02);
+    assert_close(sum_p / sum_expected, 1.0, 0.012);
     free(p);
     free(x);
     H5Fclose(file);
@@ -184,9 +194,12 @@ static void run_and_read_series(const char *text, const char *suffix, table *t)
     assert_int_equal(table_read(t, path), 0);
 }
 
-/* The same at rest in 3D (N = 8, 0.5 s, 1024 particles): max |u| < 0.05 sqrt(g H), centre of
- * mass within 1 % of H/2, mass exact, |ediss| < 1 % of M_L g H. (Measured: ediss dips to
- * -1.4e-5 M_L g H here, so the strict ediss >= 0 of the 2D test is not asserted in 3D.) */
+/* The same at rest in 3D (N = 8, 0.5 s, 1024 particles), each bound about 3x the measured
+ * figure: max |u| < 2e-3 m/s (measured 7.2e-4 m/s, 0.073 % of sqrt(g H)), centre of mass
+ * within 1.2e-4 m of H/2 (measured 4.2e-5 m), |ediss| < 1e-5 J (measured 3.45e-6 J,
+ * 1.8e-6 of M_L g H = 1.96 J), mass exact within 1024 DBL_EPSILON = 2.3e-13 (measured
+ * 8.9e-16). ediss dips to -3.45e-6 J here, so the strict ediss >= 0 of the 2D test is not
+ * asserted in 3D. */
 static void test_still_tank_3d(void **state)
 {
     (void)state;
@@ -199,11 +212,23 @@ static void test_still_tank_3d(void **state)
     const double h3 = 0.1, scale = 1000.0 * 0.2 * 0.1 * h3 * gravity * h3;
     const double *umax = table_column(&t, "umax"), *com_y = table_column(&t, "com_y");
     const double *mass_err = table_column(&t, "mass_err"), *ediss = table_column(&t, "ediss");
+    double worst_u = 0.0, worst_com = 0.0, worst_mass = 0.0, min_ediss = INFINITY, max_ediss = 0.0;
     for (size_t r = 0; r < t.n_rows; r++) {
-        assert_true(umax[r] < 0.05 * sqrt(gravity * h3));
-        assert_true(fabs(com_y[r] - h3 / 2) < 0.01 * h3 / 2);
-        assert_true(fabs(mass_err[r]) < 1e-12);
-        assert_true(fabs(ediss[r]) < 0.01 * scale);
+        worst_u = fmax(worst_u, umax[r]);
+        worst_com = fmax(worst_com, fabs(com_y[r] - h3 / 2));
+        worst_mass = fmax(worst_mass, fabs(mass_err[r]));
+        min_ediss = fmin(min_ediss, ediss[r]);
+        max_ediss = fmax(max_ediss, fabs(ediss[r]));
+    }
+    printf("still tank 3D: max|u| = %.3g m/s (%.2g sqrt(g H)), max|com_y - H/2| = %.3g m, "
+           "max|mass_err| = %.3g, ediss in [%.3g, %.3g] J (M_L g H = %.3g J)\n",
+           worst_u, worst_u / sqrt(gravity * h3), worst_com, worst_mass, min_ediss, max_ediss,
+           scale);
+    for (size_t r = 0; r < t.n_rows; r++) {
+        assert_true(umax[r] < 2e-3);
+        assert_true(fabs(com_y[r] - h3 / 2) < 1.2e-4);
+        assert_true(fabs(mass_err[r]) < 1024.0 * DBL_EPSILON);
+        assert_true(fabs(ediss[r]) < 1e-5);
     }
     assert_true(t.n_rows == 51);
     table_free(&t);

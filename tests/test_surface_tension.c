@@ -5,6 +5,7 @@
 #include "diag/freesurface.h"
 #include "scheme/solver.h"
 
+#include <float.h>
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -74,8 +75,11 @@ static double equivalent_radius(const solver *s)
 }
 
 /* Across the flat surface of a lattice block, sum delta V per unit area is 1 (the
- * calibration of theory §4; the block's x spacing is within dr / 2n of dr), and the
- * curvature is zero: every normal is vertical. */
+ * calibration of theory §4; the block's 6R is a whole number of dr here), and the curvature
+ * is zero: every normal is vertical. Both to round-off: the sum of n_fluid terms within
+ * n_fluid DBL_EPSILON (2.7e-13 in 2D, 8.0e-12 in 3D; measured -1.7e-15 and 5.4e-14), and
+ * |kappa| dr, a sum over a particle's neighbours (about 50 in 2D, 113 in 3D) of terms of
+ * order 1, within 128 DBL_EPSILON = 2.8e-14 (measured 4.3e-16 and 1.3e-15). */
 static void test_flat_surface(void **state)
 {
     (void)state;
@@ -90,10 +94,10 @@ static void test_flat_surface(void **state)
         sum += p->interface[i] * p->vol[i];
         if (fabs(p->curvature[i]) > kappa_max) kappa_max = fabs(p->curvature[i]);
     }
-    printf("%dD flat block: sum delta V / area = %.6f, max |kappa| dr = %.2e\n", DIM, sum / area,
-           kappa_max * s.dv.dr);
-    assert_close(sum / area, 1.0, 0.01);
-    assert_true(kappa_max * s.dv.dr < 1e-9);
+    printf("%dD flat block: sum delta V / area - 1 = %.2e, max |kappa| dr = %.2e\n", DIM,
+           sum / area - 1.0, kappa_max * s.dv.dr);
+    assert_close(sum / area, 1.0, (double)p->n_fluid * DBL_EPSILON);
+    assert_true(kappa_max * s.dv.dr < 128.0 * DBL_EPSILON);
     solver_free(&s);
 }
 
@@ -184,30 +188,55 @@ static curvature_row patch_curvature(int n, int on_shells)
             double e = fabs(s.p.curvature[i] / outer - 1.0);
             if (e > row.worst) row.worst = e;
         }
-    printf("| %dD | %-7s | %2d | %+6.2f %% | %6.1f %% | %6.1f %% |\n", DIM,
+    printf("| %dD | %-7s | %2d | %+6.2f %% | %6.2f %% | %7.3f %% |\n", DIM,
            on_shells ? "shells" : "lattice", n, 100.0 * row.weighted, 100.0 * row.rms,
            100.0 * row.worst);
     solver_free(&s);
     return row;
 }
 
-/* The table of docs/surface-tension.md, asserted at R / dr = 20 within the issue's 10 %:
- * - cut out of the lattice, the delta-weighted mean of the circle and the ball (the
- *   staircase makes single particles' curvature noisy: its steps are sharper than 2h can
- *   smooth, the more so at high R / dr);
- * - on shells (a smooth surface), every free-surface particle. */
+/* The table of docs/surface-tension.md, every row the test computes asserted against its
+ * measured figures (below, as fractions; printed in per cent): the delta-weighted mean's
+ * error, the rms and the worst free-surface particle, each at most 1.5x its measured value.
+ * These are one geometric evaluation each, no time stepping, so between machines they move
+ * by round-off only; the margin leaves room for a change that moves them a little, and a
+ * change that moves them more must update the table here and in the docs. What the figures
+ * say:
+ * - cut out of the lattice, the delta-weighted mean of the circle and the ball is within
+ *   the 10 % that surface tension needs at R / dr = 20 (1.5 x 5.6 % and 1.5 x 5.7 %); the
+ *   staircase makes single particles' curvature noisy (its steps are sharper than 2h can
+ *   smooth, the more so at high R / dr), and the rms and worst grow with R / dr;
+ * - on shells (a smooth surface), the delta-weighted error is the dr / 2R of the outermost
+ *   layer below the surface, and every free-surface particle is within a few per cent of
+ *   the curvature through the outermost particles' centres. */
+static const int patch_sizes[3] = {10, 20, 40};
+#if DIM == 2
+enum { N_PATCH_SIZES = 3 };
+static const curvature_row measured[2][3] = {
+    /* lattice */ {{0.0633, 0.1687, 0.2573}, {0.0557, 0.3382, 0.5962}, {0.0077, 0.6270, 1.3387}},
+    /* shells */ {{0.0526, 0.0526, 0.00069}, {0.0256, 0.0256, 0.00107}, {0.0127, 0.0127, 0.00128}},
+};
+#else
+enum { N_PATCH_SIZES = 2 };
+static const curvature_row measured[2][3] = {
+    /* lattice */ {{0.0665, 0.1255, 0.2436}, {0.0574, 0.2697, 0.8727}},
+    /* shells */ {{0.0527, 0.0527, 0.01322}, {0.0257, 0.0257, 0.03093}},
+};
+#endif
+
 static void test_patch_curvature(void **state)
 {
     (void)state;
+    const double margin = 1.5;
     printf("| dim | surface | R/dr | delta-weighted kappa | rms free | worst free |\n");
-    int sizes[3] = {10, 20, 40}, n_sizes = DIM == 2 ? 3 : 2;
-    for (int k = 0; k < n_sizes; k++) {
-        curvature_row lattice = patch_curvature(sizes[k], 0);
-        curvature_row shells = patch_curvature(sizes[k], 1);
-        if (sizes[k] != 20) continue;
-        assert_close(lattice.weighted, 0.0, 0.10);
-        assert_true(shells.worst < 0.10);
-    }
+    for (int k = 0; k < N_PATCH_SIZES; k++)
+        for (int on_shells = 0; on_shells <= 1; on_shells++) {
+            curvature_row row = patch_curvature(patch_sizes[k], on_shells);
+            const curvature_row *bound = &measured[on_shells][k];
+            assert_true(fabs(row.weighted) <= margin * bound->weighted);
+            assert_true(row.rms <= margin * bound->rms);
+            assert_true(row.worst <= margin * bound->worst);
+        }
 }
 
 /* The force acts in S_F only, and on a body of liquid away from the walls it sums to zero to

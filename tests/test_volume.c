@@ -23,15 +23,20 @@
 #define RES_TEXT "25"
 #endif
 
-/* theory §1: sum_j W_ij dr^n - 1 on the infinite lattice, and L_xx - 1 (Eq. 10) */
+/* theory §1: sum_j W_ij dr^n - 1 on the infinite lattice, and L_xx - 1 (Eq. 10), rounded
+ * there to 4 (2D) and 3 (3D) digits: s_round, half a unit of the last digit of the sum. The
+ * tolerances of the block at rest on eps_V1, eps_V2 and eps_V3 (tol_v2, tol_v3) and of the
+ * compressed block's volume (tol_compressed): see the tests. */
 #if DIM == 2
 static const double lattice_sum = 1.206e-3, lattice_l = -8.0e-4; /* h/dr = 2 */
+static const double s_round = 5e-7, tol_v2 = 2e-5, tol_v3 = 6e-5, tol_compressed = 1.1e-4;
 static const char block_case[] = "[case]\nname = block\ndim = 2\nt_end = 1\n"
                                  "[tank]\nlength = 0.4\nheight = 0.3\n"
                                  "[liquid]\nheight = 0.2\n[model]\nscheme = delta\n"
                                  "[numerics]\nresolution = 20\n";
 #else
 static const double lattice_sum = 3.14e-3, lattice_l = 6.2e-4; /* h/dr = 1.5 */
+static const double s_round = 5e-6, tol_v2 = 2.5e-5, tol_v3 = 9e-5, tol_compressed = 2e-4;
 static const char block_case[] = "[case]\nname = block\ndim = 3\nt_end = 1\n"
                                  "[tank]\nlength = 0.24\nheight = 0.2\nwidth = 0.12\n"
                                  "[liquid]\nheight = 0.12\n[model]\nscheme = delta\n"
@@ -62,7 +67,13 @@ static void prepare_block(config *cfg, solver *s)
  * layer (walls are not free surface), S_F the particles less than 2h below it, and the
  * volume errors at t = 0 are the lattice-sum offsets of theory §1 times the share of
  * particles outside S_F: eps_V1 = 1/(1 + s) - 1, eps_V2 = -s, eps_V3 = -(L_xx - 1) (the
- * lattice's L is isotropic). Tolerance 3e-4 (the issue's). */
+ * lattice's L is isotropic). eps_V1 is off by the rounding of s alone (measured 1.6e-7 in 2D,
+ * 8.1e-7 in 3D; docs/volume-lattice.md measures s = 1.20580e-3 and 3.14108e-3): its bound is
+ * the share times s_round, 4.0e-7 and 3.8e-6. eps_V2 and eps_V3 read the hydrostatic
+ * particles' volumes m / rho and the walls' ghosts, which the infinite lattice does not have:
+ * measured off by 7.1e-6 and 2.15e-5 (2D), 9.6e-6 and 3.26e-5 (3D), each bounded by
+ * tol_v2 and tol_v3, 2.8x (2D) and 2.6x, 2.8x (3D) the measured figure. These are single
+ * evaluations on the initial lattice: between machines they differ by round-off. */
 static void test_block_at_rest(void **state)
 {
     (void)state;
@@ -87,13 +98,15 @@ static void test_block_at_rest(void **state)
     volume_errors ve;
     volume_compute(p, s.dv.v0 / (double)p->n_fluid, s.scratch, NULL, &ve);
     double share = (double)outside / (double)p->n_fluid;
-    printf("%dD block: eps_V1 %.4e (expected %.4e), eps_V2 %.4e (%.4e), eps_V3 %.4e (%.4e), "
-           "share outside S_F %.3f\n",
-           DIM, ve.eps_v1, share * (1.0 / (1.0 + lattice_sum) - 1.0), ve.eps_v2,
-           -share * lattice_sum, ve.eps_v3, -share * lattice_l, share);
-    assert_close(ve.eps_v1, share * (1.0 / (1.0 + lattice_sum) - 1.0), 3e-4);
-    assert_close(ve.eps_v2, -share * lattice_sum, 3e-4);
-    assert_close(ve.eps_v3, -share * lattice_l, 3e-4);
+    double expected[3] = {share * (1.0 / (1.0 + lattice_sum) - 1.0), -share * lattice_sum,
+                          -share * lattice_l};
+    printf("%dD block: eps_V1 %.4e (expected %.4e, off by %.2e), eps_V2 %.4e (%.4e, %.2e), "
+           "eps_V3 %.4e (%.4e, %.2e), share outside S_F %.3f\n",
+           DIM, ve.eps_v1, expected[0], ve.eps_v1 - expected[0], ve.eps_v2, expected[1],
+           ve.eps_v2 - expected[1], ve.eps_v3, expected[2], ve.eps_v3 - expected[2], share);
+    assert_close(ve.eps_v1, expected[0], share * s_round);
+    assert_close(ve.eps_v2, expected[1], tol_v2);
+    assert_close(ve.eps_v3, expected[2], tol_v3);
     assert_int_equal(ve.n_free_surface, (long)n_free);
     solver_free(&s);
 }
@@ -272,9 +285,11 @@ static void test_disc_outer_ring(void **state)
 
 /* A block compressed uniformly (spacing dr (1 - e), e = 1 %): the geometric volume 1 / sum W
  * of interior particles (off S_F and more than 2h from the walls, so their support is whole)
- * reads (1 - e)^n dr^n within 0.2 % (the issue's figure), once the lattice-sum offset s of
- * theory §1 is taken out: 1 / sum W = a^n / (1 + s) on a lattice of spacing a, and s is
- * 0.31 % in 3D at h/dr = 1.5, larger than the tolerance itself. */
+ * reads (1 - e)^n dr^n once the lattice-sum offset s of theory §1 is taken out:
+ * 1 / sum W = a^n / (1 + s) on a lattice of spacing a (s is 0.31 % in 3D at h/dr = 1.5). What
+ * is left is s's change with h / a, which the 1 % compression moves, and the rounding of s:
+ * measured worst 3.78e-5 (2D) and 6.81e-5 (3D), bounded by tol_compressed, 1.1e-4 and 2e-4
+ * (2.9x). */
 static void test_compressed_block(void **state)
 {
     (void)state;
@@ -299,7 +314,7 @@ static void test_compressed_block(void **state)
         if (near_wall || p->surface[i] != SURFACE_INTERIOR) continue;
         double v = 1.0 / p->kernel_sum[i];
         worst = fmax(worst, fabs(v / expected - 1.0));
-        assert_close(v / expected, 1.0, 2e-3);
+        assert_close(v / expected, 1.0, tol_compressed);
         checked++;
     }
     assert_true(checked > 20);
