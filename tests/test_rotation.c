@@ -15,6 +15,7 @@
 #include "check.h"
 #include "table.h"
 #include "run_case.h"
+#include "linear_sloshing.h"
 
 #define PI 3.14159265358979323846
 
@@ -131,36 +132,14 @@ static void test_rolling_budget_dissipates(void **state)
 
 /* ---- the linear roll response ------------------------------------------------------------- */
 
-/* The linear solution of docs/roll.md for the wall elevation: odd modes n of a tank of length
- * L and depth h rolled by theta = Theta sin(w t + phase) about the point z_r above the mean
- * free surface, from rest:
- *   beta_n'' + sigma_n^2 beta_n = -k_n tanh(k_n h) X_n (g theta + theta'' Z_n),
- * X_n = -4 / (L k_n^2), Z_n = z_r + (2 / k_n) tanh(k_n h / 2); eta(x) = sum beta_n cos(k_n x)
- * with x from the left wall. */
-static double linear_roll_elevation(double L, double h, double angle, double w, double phase,
-                                    double z_r, double x, double t)
-{
-    const double g = 9.81;
-    double eta = 0.0;
-    for (int n = 1; n < 82; n += 2) {
-        double k = n * PI / L, th = tanh(k * h), sigma2 = g * k * th, sigma = sqrt(sigma2);
-        double x_n = -4.0 / (L * k * k), z_n = z_r + 2.0 / k * tanh(0.5 * k * h);
-        double p = -k * th * x_n * angle * (g - w * w * z_n) / (sigma2 - w * w);
-        double beta = p * sin(w * t + phase) - p * sin(phase) * cos(sigma * t) -
-                      p * w * cos(phase) / sigma * sin(sigma * t);
-        eta += beta * cos(k * x);
-    }
-    return eta;
-}
-
 /* The INM tank (1 m, 0.35 m of water) rolls by half a degree about its bottom centre at
  * T = 2 s, away from the first sloshing period (1.27 s), starting tilted and at rest
  * (phase pi/2: no initial rate). The gauge 5 cm from the left wall against the linear
- * solution: its amplitude at the forcing frequency (the Fourier coefficient over the two
- * periods, the same projection of both signals) and its largest excursion (the
- * nonlinearity is (amplitude / depth) = 3 %, the numerical damping of the free modes the
- * start excites is what the resolution adds). Measured at N = 16, the test's: 0.981 and
- * 0.993, bounds 5.5 % and 2 % (2.9x); elsewhere 0.963 and 0.972 at N = 20, 0.996 and 0.910
+ * solution (linear_sloshing.h): its amplitude at the forcing frequency (the Fourier
+ * coefficient over the two periods, the same projection of both signals) and its largest
+ * excursion (the nonlinearity is (amplitude / depth) = 3 %, the numerical damping of the free
+ * modes the start excites is what the resolution adds). Measured at N = 16, the test's: 0.981
+ * and 0.993, bounds 5.5 % and 2 % (2.9x); elsewhere 0.963 and 0.972 at N = 20, 0.996 and 0.910
  * over 8 s at N = 40 (docs/roll.md). */
 static void test_linear_roll_response(void **state)
 {
@@ -173,6 +152,7 @@ static void test_linear_roll_response(void **state)
              "phase = %.17g\ncenter = 0.5 0.0\n[numerics]\nresolution = 16\n"
              "[probes]\ngauges = 0.05\n[output]\ntimeseries_every = 0.01\n",
              angle, 0.5 * PI);
+    const linear_tank linear = {L, h, 9.81, 0.0, angle, w, 0.5 * PI, -h}; /* docs/roll.md */
     table series, probes;
     run_case_text(text, NULL, 0, dir, &series);
     snprintf(path, sizeof path, "%s/probes.csv", dir);
@@ -180,8 +160,7 @@ static void test_linear_roll_response(void **state)
     const double *t = table_column(&probes, "t"), *gauge = table_column(&probes, "gauge_1");
     double c[2] = {0, 0}, s[2] = {0, 0}, most[2] = {0, 0};
     for (size_t k = 0; k + 1 < probes.n_rows; k++) { /* [0, 4 s): two whole periods */
-        double eta[2] = {gauge[k] - gauge[0],
-                         linear_roll_elevation(L, h, angle, w, 0.5 * PI, -h, 0.05, t[k])};
+        double eta[2] = {gauge[k] - gauge[0], linear_tank_elevation(&linear, 0.05, t[k])};
         for (int m = 0; m < 2; m++) {
             c[m] += eta[m] * cos(w * t[k]);
             s[m] += eta[m] * sin(w * t[k]);
