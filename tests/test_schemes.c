@@ -1,25 +1,30 @@
 /* Integration: the five schemes of Table 1 on a short SAP heave run (paper sec. 5.1.1 at
  * N = 20, 0.4 s = 5.2 periods; case as cases/sap.ini). One ctest entry per scheme:
- * `test_schemes SCHEME`; `test_schemes switch` is the eta switch test.
+ * `test_schemes SCHEME`; `test_schemes switch` is the eta switch test, `test_schemes adaptive`
+ * the adaptive control's.
  *
- * Every scheme runs to the end and keeps the total mass exact: |mass_err| < 1e-12 at every
- * row. With variable masses (eta = 1, Eq. 3) the mass fluxes between fluid particles are
- * antisymmetric pair terms and walls exchange none, so only round-off remains: ~1e-14 for
- * sums over 3440 particles and ~2500 steps.
+ * Every scheme runs to the end, keeps the total mass exact (|mass_err| < 1e-12 at every row:
+ * with variable masses, eta = 1 in Eq. 3, the mass fluxes between fluid particles are
+ * antisymmetric pair terms and walls exchange none, so only round-off remains, ~1e-14 for
+ * sums over 3440 particles and ~2500 steps) and stays in the band of what it determines: its
+ * mean volume error, the share of the tank's work it dissipates, whether EdBC acts, and a
+ * budget that creates no energy (scheme_band below).
  *
- * The switch (theory §8): delta-plus-ALE with eta_threshold = 0.002 must switch at least once
- * and keep max |eps_v1| < 0.006, three times the threshold (the issue's figure): eps_v1
- * oscillates within each period by about 0.2 % at this resolution, so it passes the
- * threshold before the switch turns it.
+ * The switch (theory §8): delta-plus-ALE at the paper's threshold, 1 %, to 1.2 s (15.6
+ * periods). EdBC while eta = 0 raises eps_v1 until it passes the threshold (at 0.64 s); the
+ * switch turns eta to 1 and the volume error must come back: its mean over the last 2.6
+ * periods, (1, 1.2] s, within the threshold and below the mean of the 2.6 periods before, and
+ * max |eps_v1| below twice the threshold (eps_v1 swings by some 0.5 % within a period and goes
+ * on rising for a while after the switch). Measured: one switch, max 0.96 %, means +0.33 % then
+ * +0.14 %; with K_c 10 % lower (a perturbation that only moves the chaotic details) one switch
+ * at 0.70 s, max 1.57 %, means +0.92 % then +0.69 %. Without the switch (eta_threshold = 0.5)
+ * the same run fails all three bounds: max 4.49 %, means +1.44 % then +2.74 %.
  *
  * The adaptive control (`test_schemes adaptive`, eta_control.h) against the paper's switch on
  * the same SAP case run to 0.8 s (10.4 periods) at the paper's threshold, 0.01: the adaptive
- * control must keep max |eps_v1| below the switch's with no more regime changes (the issue's
- * requirement), and the mass exact with eta between 0 and 1. At N = 20 the switch turns
- * eta to 1 at 0.70 s and eps_v1 reaches +1.37 % by 0.79 s (+1.55 % at 0.875 s); the
- * adaptive control ends its eta = 0 regime at 0.46 s and stays within 0.43 %
- * (docs/validation.md). 0.8 s rather than the 1.0 s it ran before: the longest test of the
- * suite, and what it compares has happened by then. */
+ * control must keep max |eps_v1| below the switch's with no more regime changes, and the mass
+ * exact with eta between 0 and 1. At N = 20 the switch turns eta to 1 at 0.64 s and eps_v1
+ * reaches +0.96 % by 0.73 s; the adaptive control's figures are in docs/validation.md. */
 #include "app/simulation.h"
 
 #include <omp.h>
@@ -50,8 +55,6 @@ static const char sap_case[] = "[case]\nname = sap\ndim = 2\nt_end = 0.4\n"
                                "density_bound = 0.5\n"
                                "[output]\ntimeseries_every = 0.005\n";
 
-static const char *scheme_under_test;
-
 static double max_abs(const double *x, size_t n)
 {
     double worst = 0.0;
@@ -74,46 +77,110 @@ static int count_events(const char *dir, const char *name)
     return n;
 }
 
-static void test_scheme_runs_with_mass_exact(void **state)
+/* Mean of column `name` over the rows with t0 < t <= t1. */
+static double mean_over(const table *t, const char *name, double t0, double t1)
 {
-    (void)state;
-    const char *scheme = scheme_under_test;
+    const double *time = table_column(t, "t"), *x = table_column(t, name);
+    double sum = 0.0;
+    int n = 0;
+    for (size_t r = 0; r < t->n_rows; r++)
+        if (time[r] > t0 && time[r] <= t1 + 1e-9) sum += x[r], n++;
+    assert_true(n > 0);
+    return sum / n;
+}
+
+/* What each scheme determines on this case, with the band it must stay in. The figures were
+ * measured on this run and on two runs whose time step alone differs (K_c 0.9 and 0.8 times
+ * Table 1's): a perturbation that changes no physics but every bit of the chaotic details of
+ * this violent heave (jets, drops). Each band is the measured figure +- 3 times the largest
+ * difference between those runs. Figures (mean eps_v1 over (0.2, 0.4] s, in %; ediss / work_in
+ * at 0.4 s; K_c x1 / x0.9 / x0.8):
+ *   standard        -0.0981 / -0.0979 / -0.0864     0.760 / 0.730 / 0.832
+ *   delta           +0.1270 / +0.0980 / +0.0954     0.763 / 0.870 / 0.841
+ *   delta-plus      -0.0796 / -0.0757 / -0.0774     0.226 / 0.236 / 0.241
+ *   delta-ale       -0.0829 / -0.0765 / -0.0841     0.188 / 0.185 / 0.264
+ * delta-plus-ALE keeps eta = 0 to 0.4 s at the 1 % threshold (the switch comes at 0.64 s), so
+ * it runs as delta-plus, bit for bit. EdBC (model.edbc = with-eta0 here) acts wherever eta = 0:
+ * n_edbc > 0 in some rows of every scheme but delta-ALE, whose eta = 1 turns it off (n_edbc = 0
+ * in every row). Without EdBC delta-SPH's mean falls out of its band: +0.021 % (K_c x0.9:
+ * -0.038 %), the paper's sec. 5.1.1 (EdBC raises delta-SPH's volume error). The budget: the
+ * liquid cannot create energy, ediss >= -1.2e-6 J at every row (the most negative, -3.8e-7 J,
+ * is delta-SPH's in the first rows: the quadrature of the budget; bound 3x). */
+typedef struct {
+    const char *scheme;
+    double mean_eps, mean_tol;   /* mean eps_v1 over (0.2, 0.4] s */
+    double dissipated, diss_tol; /* ediss / work_in at 0.4 s */
+    bool edbc_acts;
+} scheme_band;
+
+static const scheme_band bands[] = {
+    {"standard", -0.000981, 3 * 0.000117, 0.760, 3 * 0.072, true},
+    {"delta", 0.001270, 3 * 0.000316, 0.763, 3 * 0.106, true},
+    {"delta-plus", -0.000796, 3 * 0.000039, 0.226, 3 * 0.015, true},
+    {"delta-ale", -0.000829, 3 * 0.000064, 0.188, 3 * 0.076, false},
+    {"delta-plus-ale", -0.000796, 3 * 0.000039, 0.226, 3 * 0.015, true},
+};
+
+static void test_scheme_band(void **state)
+{
+    const scheme_band *band = *state;
     char set[64], dir[64];
-    snprintf(set, sizeof set, "model.scheme=%s", scheme);
+    snprintf(set, sizeof set, "model.scheme=%s", band->scheme);
     const char *overrides[] = {set};
     table t;
     run_case_text(sap_case, overrides, 1, dir, &t);
-    const double *eta = table_column(&t, "eta"), *eps = table_column(&t, "eps_v1");
-    double worst = max_abs(table_column(&t, "mass_err"), t.n_rows);
-    printf("%s: %zu rows to t = %g s, max |mass_err| = %.2e, max |eps_v1| = %.3f %%, "
-           "eta at the end %g\n",
-           scheme, t.n_rows, table_column(&t, "t")[t.n_rows - 1], worst,
-           100.0 * max_abs(eps, t.n_rows), eta[t.n_rows - 1]);
-    assert_close(table_column(&t, "t")[t.n_rows - 1], 0.4, 1e-12);
-    assert_true(worst < 1e-12);
-    /* Table 1: eta = 1 in delta-ALE, 0 in the schemes without variable masses */
-    double expected_eta = !strcmp(scheme, "delta-ale") ? 1.0 : 0.0;
-    if (strcmp(scheme, "delta-plus-ale"))
-        for (size_t r = 0; r < t.n_rows; r++) assert_true(eta[r] == expected_eta);
+    const double *eta = table_column(&t, "eta"), *n_edbc = table_column(&t, "n_edbc");
+    const double *ediss = table_column(&t, "ediss"), *work_in = table_column(&t, "work_in");
+    size_t last = t.n_rows - 1;
+    double mass = max_abs(table_column(&t, "mass_err"), t.n_rows);
+    double mean = mean_over(&t, "eps_v1", 0.2, 0.4), dissipated = ediss[last] / work_in[last];
+    double least_ediss = INFINITY, edbc_rows = 0;
+    for (size_t r = 0; r < t.n_rows; r++) {
+        least_ediss = fmin(least_ediss, ediss[r]);
+        edbc_rows += n_edbc[r] > 0;
+    }
+    printf("%s: mean eps_v1 %+.4f %% over (0.2, 0.4] s (band %+.4f +- %.4f), ediss / work_in "
+           "%.3f (band %.3f +- %.3f), n_edbc > 0 in %g rows, least ediss %.2e J, "
+           "max |mass_err| %.1e\n",
+           band->scheme, 100 * mean, 100 * band->mean_eps, 100 * band->mean_tol, dissipated,
+           band->dissipated, band->diss_tol, edbc_rows, least_ediss, mass);
+    assert_close(table_column(&t, "t")[last], 0.4, 1e-12);
+    assert_true(mass < 1e-12);
+    /* Table 1: eta = 1 in delta-ALE, 0 in the others (delta-plus-ALE's switch is not reached) */
+    double expected_eta = !strcmp(band->scheme, "delta-ale") ? 1.0 : 0.0;
+    for (size_t r = 0; r < t.n_rows; r++) assert_true(eta[r] == expected_eta);
+    assert_close(mean, band->mean_eps, band->mean_tol);
+    assert_close(dissipated, band->dissipated, band->diss_tol);
+    assert_true(least_ediss >= -1.2e-6);
+    if (band->edbc_acts)
+        assert_true(edbc_rows > 0);
+    else
+        assert_true(edbc_rows == 0);
     table_free(&t);
 }
 
 static void test_eta_switch(void **state)
 {
     (void)state;
-    const char *overrides[] = {"model.scheme=delta-plus-ale", "model.eta_threshold=0.002"};
+    const double threshold = 0.01;
+    const char *overrides[] = {"model.scheme=delta-plus-ale", "model.eta_threshold=0.01",
+                               "case.t_end=1.2"};
     char dir[64];
     table t;
-    run_case_text(sap_case, overrides, 2, dir, &t);
-    const double *eta = table_column(&t, "eta"), *eps = table_column(&t, "eps_v1");
+    run_case_text(sap_case, overrides, 3, dir, &t);
+    const double *eta = table_column(&t, "eta");
     int switches = count_events(dir, "eta_switch"), changes = 0;
     for (size_t r = 1; r < t.n_rows; r++) changes += eta[r] != eta[r - 1];
-    double worst = max_abs(eps, t.n_rows);
-    printf("switch: %d eta switches (%d seen in the time series), max |eps_v1| = %.3f %%\n",
-           switches, changes, 100.0 * worst);
+    double worst = max_abs(table_column(&t, "eps_v1"), t.n_rows);
+    double before = mean_over(&t, "eps_v1", 0.8, 1.0), after = mean_over(&t, "eps_v1", 1.0, 1.2);
+    printf("switch: %d eta switches (%d seen in the time series), max |eps_v1| = %.3f %%, "
+           "mean eps_v1 %.3f %% over (0.8, 1] s, %.3f %% over (1, 1.2] s\n",
+           switches, changes, 100.0 * worst, 100.0 * before, 100.0 * after);
     assert_true(switches >= 1);
     assert_true(changes >= 1 && changes <= switches);
-    assert_true(worst < 0.006);
+    assert_true(worst < 2.0 * threshold);
+    assert_true(fabs(after) < threshold);
+    assert_true(after < before);
     table_free(&t);
 }
 
@@ -188,8 +255,6 @@ static void test_adaptive_against_switch(void **state)
 
 int main(int argc, char **argv)
 {
-    static const char *const schemes[] = {"standard", "delta", "delta-plus", "delta-ale",
-                                          "delta-plus-ale"};
     const char *what = argc > 1 ? argv[1] : "";
     if (!strcmp(what, "switch")) {
         const struct CMUnitTest tests[] = {cmocka_unit_test(test_eta_switch)};
@@ -199,10 +264,10 @@ int main(int argc, char **argv)
         const struct CMUnitTest tests[] = {cmocka_unit_test(test_adaptive_against_switch)};
         return cmocka_run_group_tests(tests, NULL, NULL);
     }
-    for (size_t s = 0; s < sizeof schemes / sizeof schemes[0]; s++)
-        if (!strcmp(what, schemes[s])) {
-            scheme_under_test = schemes[s];
-            const struct CMUnitTest tests[] = {cmocka_unit_test(test_scheme_runs_with_mass_exact)};
+    for (size_t b = 0; b < sizeof bands / sizeof bands[0]; b++)
+        if (!strcmp(what, bands[b].scheme)) {
+            const struct CMUnitTest tests[] = {
+                {bands[b].scheme, test_scheme_band, NULL, NULL, (void *)&bands[b]}};
             return cmocka_run_group_tests(tests, NULL, NULL);
         }
     fprintf(stderr, "usage: test_schemes standard|delta|delta-plus|delta-ale|delta-plus-ale|switch|"
