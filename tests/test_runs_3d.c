@@ -1,0 +1,163 @@
+/* Whole 3D runs against theory, about 35 s of CPU time on one thread:
+ * - free sloshing: the first mode's period in a narrow rectangular tank, against linear
+ *   theory;
+ * - Laplace: a weightless ball of liquid at rest under surface tension, whose inside pressure
+ *   is 2 sigma / R. */
+#ifndef DIM
+#define DIM 3 /* the ball is stepped through the 3D solver's API */
+#endif
+#if DIM != 3
+#error "test_runs_3d steps the 3D solver"
+#endif
+#include "app/simulation.h"
+#include "scheme/solver.h"
+
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <cmocka.h>
+
+#include "check.h"
+#include "table.h"
+#include "run_case.h"
+#include "sloshing.h"
+
+#define SIGMA  1.0 /* N/m */
+#define RHO    1000.0
+#define RADIUS 0.05 /* m */
+
+/* A weightless ellipsoid of liquid (the case's ellipse in 3D: it spans the tank's width) in a
+ * cubic tank of side 6R, R / dr = n, started ready to step. */
+static void start_ball_case(config *cfg, solver *s, int n, double nu, double t_end)
+{
+    char text[1024], err[1024];
+    double side = 6.0 * RADIUS;
+    snprintf(text, sizeof text,
+             "[case]\nname = ball\ndim = 3\nt_end = %g\n[tank]\nlength = %.17g\n"
+             "height = %.17g\nwidth = %.17g\n[liquid]\nshape = ellipse\nheight = %.17g\n"
+             "length = %.17g\nx0 = %.17g\ny0 = %.17g\n[fluid]\ndensity = %g\nviscosity = %g\n"
+             "gravity = 0\nsurface_tension = %g\n[model]\nscheme = delta-plus\nles = false\n"
+             "[numerics]\nresolution = %d\nsound_speed = 2\n",
+             t_end, side, side, side, 2.0 * RADIUS, 2.0 * RADIUS, 2.0 * RADIUS, 2.0 * RADIUS, RHO,
+             nu, SIGMA, 2 * n);
+    if (config_load_string(cfg, text, "test", NULL, 0, err, sizeof err)) fail_msg("%s", err);
+    if (solver_init(s, cfg, err, sizeof err)) fail_msg("%s", err);
+}
+
+/* Keeps the particles within R of the tank's centre: the ball, clear of every wall. */
+static void cut_ball(solver *s)
+{
+    particles *p = &s->p;
+    size_t k = 0;
+    for (size_t i = 0; i < p->n_fluid; i++) {
+        double r2 = 0.0;
+        for (int d = 0; d < DIM; d++) r2 += pow(p->x[d][i] - 3.0 * RADIUS, 2);
+        if (r2 > RADIUS * RADIUS) continue;
+        for (int d = 0; d < DIM; d++) {
+            p->x[d][k] = p->x[d][i];
+            p->u[d][k] = p->u[d][i];
+        }
+        p->m[k] = p->m[i];
+        p->rho[k] = p->rho[i];
+        p->p[k] = p->p[i];
+        p->vol[k] = p->vol[i];
+        p->id[k] = p->id[i];
+        k++;
+    }
+    p->n_fluid = p->n_total = k;
+}
+
+/* Mean pressure of the particles within R/2 of the ball's centre of mass. */
+static double core_pressure(const solver *s, double radius)
+{
+    const particles *p = &s->p;
+    double c[DIM] = {0.0}, mass = 0.0;
+    for (size_t i = 0; i < p->n_fluid; i++) {
+        for (int d = 0; d < DIM; d++) c[d] += p->m[i] * p->x[d][i];
+        mass += p->m[i];
+    }
+    double sum = 0.0;
+    size_t n = 0;
+    for (size_t i = 0; i < p->n_fluid; i++) {
+        double r2 = 0.0;
+        for (int d = 0; d < DIM; d++) r2 += pow(p->x[d][i] - c[d] / mass, 2);
+        if (r2 > 0.25 * radius * radius) continue;
+        sum += p->p[i];
+        n++;
+    }
+    return sum / (double)n;
+}
+
+/* The ball of R / dr = 8 cut out of the lattice, from rest, with nu = 1e-3 (Ohnesorge number
+ * nu sqrt(rho / (sigma R)) = 0.14) so that the start's acoustic and capillary transients have
+ * decayed by 1 s; the core pressure averaged over 1 - 2 s against 2 sigma / R = 39.8 Pa.
+ * Measured: 50.3 Pa, +26.4 %. The error is the discrete force's, and falls as dr / R (about
+ * 2.1 dr / R: +21 % at R / dr = 10, +17.6 % at 12): the band S_F that carries the force lies
+ * one to two dr inside the surface, and there its interface function integrates along the
+ * radius to 1.18 (1.000 across a flat surface), with the curvature 5.5 % above 2 / R; the
+ * particles' pressure follows the radial integral of the force density to 6 %. The tolerance
+ * is the measured error times a margin of 1.2: 31.7 %, which sigma halved in the case
+ * (-38.3 %) does not pass. */
+static void test_laplace_ball(void **state)
+{
+    (void)state;
+    config cfg;
+    solver s;
+    start_ball_case(&cfg, &s, 8, 1e-3, 2.0);
+    cut_ball(&s);
+    double radius = cbrt(3.0 * (double)s.p.n_fluid * s.dv.cell_volume / (4.0 * M_PI));
+    double sum = 0.0, weight = 0.0;
+    while (s.t < cfg.t_end) {
+        assert_int_equal(solver_step(&s, cfg.t_end), 0);
+        if (s.t >= 1.0) {
+            sum += core_pressure(&s, radius) * s.last_dt;
+            weight += s.last_dt;
+        }
+    }
+    double p_in = sum / weight, expected = 2.0 * SIGMA / radius;
+    printf("Laplace, ball of R/dr = %.2f (%zu particles): core pressure %.3f Pa over 1-2 s, "
+           "2 sigma/R = %.3f Pa (%+.1f %%), %ld steps\n",
+           radius / s.dv.dr, s.p.n_fluid, p_in, expected, 100.0 * (p_in / expected - 1.0), s.step);
+    assert_close(p_in / expected, 1.0, 1.2 * 0.264);
+    solver_free(&s);
+}
+
+/* Free sloshing of free_sloshing_case (sloshing.h: the INM tank, 1 m long, H = 0.35 m, one
+ * period of sway, A = 1 cm) in 3D: W = 0.14 m, N = 10, delta-SPH, h / dr = 2. The first mode
+ * is uniform across z, so four particles across it suffice (the run warns that the kernel
+ * spans the width; at h / dr = 1.5, W = 0.28 m gave -1.26 % against -1.33 %). After the
+ * forcing, com_x oscillates with T1 = 2 pi / sqrt(g k tanh(k H)), k = pi / L = 1.2651 s.
+ * Measured: 1.2609 s, -0.33 %. The tolerance is the measured error times a margin of 3:
+ * 1.0 %, which a tank 5 % longer (+3.25 %) does not pass. At the 3D default h / dr = 1.5 the
+ * period is -1.33 % (-0.8 % in 2D): the narrower kernel's discretisation error, too close to
+ * a 5 % change of length for this check. */
+static void test_sloshing_period_3d(void **state)
+{
+    (void)state;
+    const char *overrides[] = {"case.dim=3", "tank.width=0.14", "numerics.resolution=10",
+                               "numerics.h_over_dr=2"};
+    char dir[64];
+    table t;
+    run_case_text(free_sloshing_case, overrides, 4, dir, &t);
+    int cycles;
+    double period = com_x_period(&t, 1.5, &cycles);
+    assert_true(cycles >= 3);
+    double k = M_PI / 1.0, t1 = 2.0 * M_PI / sqrt(9.81 * k * tanh(k * 0.35));
+    printf("3D free sloshing: period %.4f s over %d cycles, linear theory %.4f s (%+.2f %%)\n",
+           period, cycles, t1, 100.0 * (period / t1 - 1.0));
+    assert_close(t1, 1.2651, 1e-4);
+    assert_close(period, t1, 3.0 * 0.0033 * t1);
+    table_free(&t);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_sloshing_period_3d),
+        cmocka_unit_test(test_laplace_ball),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
