@@ -1,6 +1,6 @@
-/* The case files of cases/ (issue: the paper's benchmarks): every one passes `vcsph check`
- * (parse, validation, derived numbers) and runs 0.05 s at N = 8 without a breakdown. The files
- * are found by listing the folder, so a new case is covered without touching this test. */
+/* The case files of cases/ (the paper's benchmarks and the default case): every one passes `vcsph
+ * check` (parse, validation, derived numbers) and runs 0.05 s at N = 8 without a breakdown. The
+ * files are found by listing the folder, so a new case is covered without touching this test. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>

@@ -2,10 +2,8 @@
  * the pixel count to the initial configuration's, so it starts at exactly 0 and, where the
  * geometric volume stays put, stays within the method's own resolution of it. INM2 3D
  * (cases/inm2-3d.ini) at N = 8 and 12 over its first 0.3 s: the liquid is 2 and 3 particles across
- * the width, and eps_v1 moves by at most 0.05 % meanwhile; eps_gm must stay within 0.2 % of 0 (the
- * issue's bound; measured at 36abb60: [-0.11, 0] % at N = 8, [-0.07, +0.04] % at N = 12; before the
- * walls' images, the particle volume and the lattice-aligned pixels of docs/graphical-method.md, it
- * fell by 0.41 % at N = 8). */
+ * the width, and eps_v1 moves by at most 0.06 % meanwhile; eps_gm must stay within 0.2 % of 0
+ * (measured: [-0.110, 0] % at N = 8, [-0.069, +0.041] % at N = 12; 1.8x). */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -61,7 +59,7 @@ static void test_inm2_3d_n12(void **state)
 /* eps_fs along a fragmenting run (docs/volume.md): SAP at Re = 494, N = 16, over its first 13
  * periods (1 s), where the flow breaks up from the fifth. The graphical method then reads the
  * liquid 5-11 % below eps_v1, which counts the free surface's layer at V_i0; eps_v1 + eps_fs,
- * which measures that layer, must agree with it within the issue's 0.5 % on average over the
+ * which measures that layer, must agree with it within 0.5 % on average over the
  * rows after the first period (measured: -0.31 %, largest row 1.38 %; at N = 20 -0.01 % and
  * 0.89 %, at N = 25 over 20 periods +0.16 % and 1.11 %). The bound on eps_gm - eps_v1 is the case's
  * premise: without a fragmented surface layer there would be nothing for eps_fs to measure. */

@@ -117,7 +117,7 @@ static int64_t checkpoint_step(const char *name)
     return step;
 }
 
-/* docs/architecture.md and issue 8: a breakdown exits 3 and leaves the checkpoint of the step
+/* docs/architecture.md: a breakdown exits 3 and leaves the checkpoint of the step
  * before it, which continues into the same breakdown, and leaves it again. */
 static void test_breakdown_keeps_the_last_good_checkpoint(void **state)
 {

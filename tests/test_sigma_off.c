@@ -1,29 +1,10 @@
 /* Surface tension off (fluid.surface_tension = 0, the default) changes nothing: two short
  * delta-plus-ALE runs (2D SAP, 3D sway) end in exactly the state that the solver reaches
- * without the surface-tension code, bit for bit. The references in tests/data/sigma_off/
- * were written by this same file (VCSPH_WRITE_REFERENCE=1) built against commit 833509b,
- * before surface tension existed, and written again when the shifting in S_F took the
- * surface's normal (issue 18): built against the commit before that change with only the
- * free-surface files of the change applied (src/diag/freesurface.*, src/scheme/fields.c,
- * src/core/particles.*), so that the surface-tension code of the change was not in it; and
- * written a third time, the same way, when that normal became the nearest free-surface
- * neighbour's again with equidistant ones averaged (src/diag/freesurface.c alone), and a
- * fourth time when the steps began to land on the output times (step_stop and output_due
- * of src/app/simulation.c alone), and a fifth time when shifting and the volume correction
- * began to leave alone the concentration gradient of the liquid's own compression
- * (src/physics/shifting.h, src/scheme/fields.*, src/scheme/volume_correction.c; the energy
- * budget's work_moves of the same change does not touch the state), and a sixth time when
- * boxes shorter than 256 cells got narrower strips of cells (src/core/cells.c alone: the
- * particles' order, and so the sums' order, moved by round-off), and a seventh time when the
- * neighbour rows began to list the pairs within 2h first (src/core/cells*, the callers of
- * neighbours_build and neighbours_near: the sums' order at RK4's later stages moved by
- * round-off, 2e-9 of a value at most), and an eighth time when the geometry pass and the
- * density diffusion began to sum each row in eight interleaved partial sums (src/core/pair.c,
- * src/core/pair_block.h, src/scheme/fields.c: the sums' order, round-off, 2e-8 of a value at
- * most), and a ninth time when the shifting and the correction velocity did the same
- * (src/scheme/fields.c, src/scheme/volume_correction.*, src/core/pair_block.h), and a tenth time
- * when the cells kept the search radius as their side instead of growing to cover the box
- * exactly (src/core/cells.c alone: the particles' order, round-off). Each line is one particle,
+ * without the surface-tension code, bit for bit. The references in tests/data/sigma_off/ are
+ * written by this same file (VCSPH_WRITE_REFERENCE=1) built against a tree without the
+ * surface-tension code: when a change moves the solver's results without surface tension, they
+ * are written again from the commit before it with only the change's non-surface-tension files
+ * applied, and the commit says so (git log tests/data/sigma_off). Each line is one particle,
  * in C's exact %a notation. */
 #include <setjmp.h>
 #include <stdarg.h>

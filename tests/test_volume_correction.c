@@ -174,7 +174,8 @@ static double lattice_reading(void)
 
 /* Compressed (spacing dr (1 - e)) and expanded (dr (1 + e)) by e = 1 %, delta-plus-ALE with
  * its defaults (the correction on): eps_v1 back within 0.1 % of the lattice's reading over the
- * last half of the run (the issue's bound), and the particles off S_F back to their volume,
+ * last half of the run (measured at most 0.038 %, the 3D compressed patch; 2.6x), and the
+ * particles off S_F back to their volume,
  * mean eps_Vi within 0.1 % of the lattice's. Without the correction nothing moves the patch
  * (it has no pressure): eps_v1 stays where it started (within a tenth of its offset) and every
  * particle off S_F keeps its error (1 -+ e)^n - 1, -2 % / +2 % in 2D, -3 % / +3 % in 3D
