@@ -131,6 +131,46 @@ static gauge_comparison compare_gauge(const table *probes, int g, double x, cons
     return c;
 }
 
+/* The shipped case `name` until the linear elevation at its gauge 1 reaches H/8: the RMS
+ * difference from linear theory at most `allowed` (of the linear amplitude). */
+static void first_rise_within(const char *name, double allowed)
+{
+    config cfg;
+    shipped(name, &cfg);
+    linear_tank m = linear_of(&cfg);
+    const double x = cfg.gauges[0], t_hi = linear_reaches(&m, x, cfg.liquid_height / 8.0);
+    char t_end[64];
+    snprintf(t_end, sizeof t_end, "case.t_end=%.17g", t_hi);
+    const char *set[] = {t_end};
+    table probes;
+    run_benchmark(name, set, 1, &cfg, &probes);
+    gauge_comparison c = compare_gauge(&probes, 0, x, &m, t_hi, false);
+    assert_true(c.rms <= allowed);
+    table_free(&probes);
+}
+
+/* The shipped case `name` with `scaled` (a motion key) set to the case's value over `divisor`,
+ * over `periods` forcing periods: the RMS difference from linear theory at gauge 1 at most
+ * `rms_allowed`, its first extremum within `time_allowed` (s) of linear theory's. */
+static void linear_regime_within(const char *name, const char *scaled, double divisor,
+                                 double periods, double rms_allowed, double time_allowed)
+{
+    config cfg;
+    shipped(name, &cfg);
+    double value = !strcmp(scaled, "angle") ? cfg.angle : cfg.amplitude;
+    char motion[64], t_end[64];
+    snprintf(motion, sizeof motion, "motion.%s=%.17g", scaled, value / divisor);
+    snprintf(t_end, sizeof t_end, "case.t_end=%.17g", periods * cfg.period);
+    const char *set[] = {motion, t_end};
+    table probes;
+    run_benchmark(name, set, 2, &cfg, &probes);
+    linear_tank m = linear_of(&cfg);
+    gauge_comparison c = compare_gauge(&probes, 0, cfg.gauges[0], &m, periods * cfg.period, true);
+    assert_true(c.rms <= rms_allowed);
+    assert_close(c.t_first[0], c.t_first[1], time_allowed);
+    table_free(&probes);
+}
+
 /* ---- roll.ini ------------------------------------------------------------------------------ */
 
 /* roll.ini as shipped (4 degrees about the bottom centre at T = 1.919 s, from t = 0 with the
@@ -148,18 +188,7 @@ static gauge_comparison compare_gauge(const table *probes, int g, double x, cons
 static void test_roll_first_rise(void **state)
 {
     (void)state;
-    config cfg;
-    shipped("roll", &cfg);
-    linear_tank m = linear_of(&cfg);
-    const double x = cfg.gauges[0], t_hi = linear_reaches(&m, x, cfg.liquid_height / 8.0);
-    char t_end[64];
-    snprintf(t_end, sizeof t_end, "case.t_end=%.17g", t_hi);
-    const char *set[] = {t_end};
-    table probes;
-    run_benchmark("roll", set, 1, &cfg, &probes);
-    gauge_comparison c = compare_gauge(&probes, 0, x, &m, t_hi, false);
-    assert_true(c.rms <= 2.0 * 0.0141);
-    table_free(&probes);
+    first_rise_within("roll", 2.0 * 0.0141);
 }
 
 /* roll.ini with its angle divided by 8 (0.5 degree) over its first period: the forced response
@@ -172,19 +201,7 @@ static void test_roll_first_rise(void **state)
 static void test_roll_linear_regime(void **state)
 {
     (void)state;
-    config cfg;
-    shipped("roll", &cfg);
-    char angle[64], t_end[64];
-    snprintf(angle, sizeof angle, "motion.angle=%.17g", cfg.angle / 8.0);
-    snprintf(t_end, sizeof t_end, "case.t_end=%.17g", cfg.period);
-    const char *set[] = {angle, t_end};
-    table probes;
-    run_benchmark("roll", set, 2, &cfg, &probes);
-    linear_tank m = linear_of(&cfg);
-    gauge_comparison c = compare_gauge(&probes, 0, cfg.gauges[0], &m, cfg.period, true);
-    assert_true(c.rms <= 2.0 * 0.0281);
-    assert_close(c.t_first[0], c.t_first[1], 2.0 * 0.0102);
-    table_free(&probes);
+    linear_regime_within("roll", "angle", 8.0, 1.0, 2.0 * 0.0281, 2.0 * 0.0102);
 }
 
 /* ---- inm1.ini ------------------------------------------------------------------------------ */
@@ -199,18 +216,7 @@ static void test_roll_linear_regime(void **state)
 static void test_inm1_first_rise(void **state)
 {
     (void)state;
-    config cfg;
-    shipped("inm1", &cfg);
-    linear_tank m = linear_of(&cfg);
-    const double x = cfg.gauges[0], t_hi = linear_reaches(&m, x, cfg.liquid_height / 8.0);
-    char t_end[64];
-    snprintf(t_end, sizeof t_end, "case.t_end=%.17g", t_hi);
-    const char *set[] = {t_end};
-    table probes;
-    run_benchmark("inm1", set, 1, &cfg, &probes);
-    gauge_comparison c = compare_gauge(&probes, 0, x, &m, t_hi, false);
-    assert_true(c.rms <= 2.0 * 0.0175);
-    table_free(&probes);
+    first_rise_within("inm1", 2.0 * 0.0175);
 }
 
 /* inm1.ini with a tenth of its sway (A/L = 0.5 %), where linear theory holds (the linear
@@ -221,19 +227,7 @@ static void test_inm1_first_rise(void **state)
 static void test_inm1_linear_regime(void **state)
 {
     (void)state;
-    config cfg;
-    shipped("inm1", &cfg);
-    char amplitude[64], t_end[64];
-    snprintf(amplitude, sizeof amplitude, "motion.amplitude=%.17g", cfg.amplitude / 10.0);
-    snprintf(t_end, sizeof t_end, "case.t_end=%.17g", 2.0 * cfg.period);
-    const char *set[] = {amplitude, t_end};
-    table probes;
-    run_benchmark("inm1", set, 2, &cfg, &probes);
-    linear_tank m = linear_of(&cfg);
-    gauge_comparison c = compare_gauge(&probes, 0, cfg.gauges[0], &m, 2.0 * cfg.period, true);
-    assert_true(c.rms <= 2.0 * 0.0283);
-    assert_close(c.t_first[0], c.t_first[1], 2.0 * 0.0037);
-    table_free(&probes);
+    linear_regime_within("inm1", "amplitude", 10.0, 2.0, 2.0 * 0.0283, 2.0 * 0.0037);
 }
 
 /* ---- upm.ini ------------------------------------------------------------------------------- */

@@ -20,6 +20,7 @@
 #include "check.h"
 #include "table.h"
 #include "run_case.h"
+#include "laplace.h"
 
 #define SIGMA  1.0 /* N/m */
 #define RHO    1000.0
@@ -49,27 +50,6 @@ static void start_patch(config *cfg, solver *s, double length, double height, in
     if (solver_init(s, cfg, err, sizeof err)) fail_msg("%s", err);
 }
 
-/* Mean pressure of the particles within R/2 of the patch's centre of mass. */
-static double core_pressure(const solver *s, double radius)
-{
-    const particles *p = &s->p;
-    double c[DIM] = {0.0}, mass = 0.0;
-    for (size_t i = 0; i < p->n_fluid; i++) {
-        for (int d = 0; d < DIM; d++) c[d] += p->m[i] * p->x[d][i];
-        mass += p->m[i];
-    }
-    double sum = 0.0;
-    size_t n = 0;
-    for (size_t i = 0; i < p->n_fluid; i++) {
-        double r2 = 0.0;
-        for (int d = 0; d < DIM; d++) r2 += pow(p->x[d][i] - c[d] / mass, 2);
-        if (r2 > 0.25 * radius * radius) continue;
-        sum += p->p[i];
-        n++;
-    }
-    return sum / (double)n;
-}
-
 /* The circle of R / dr = 20 from rest, with nu = 1e-3 (Ohnesorge number
  * nu sqrt(rho / (sigma R)) = 0.14) so that the start's acoustic and capillary transients have
  * decayed by 1 s (the lattice's staircase starts capillary waves of about 0.2 s); the core
@@ -84,15 +64,7 @@ static void test_laplace(void **state)
     solver s;
     start_patch(&cfg, &s, 2.0 * RADIUS, 2.0 * RADIUS, 40, 1e-3, 2.0);
     double radius = sqrt((double)s.p.n_fluid * s.dv.cell_volume / M_PI);
-    double sum = 0.0, weight = 0.0;
-    while (s.t < cfg.t_end) {
-        assert_int_equal(solver_step(&s, cfg.t_end), 0);
-        if (s.t >= 1.0) {
-            sum += core_pressure(&s, radius) * s.last_dt;
-            weight += s.last_dt;
-        }
-    }
-    double p_in = sum / weight, expected = SIGMA / radius;
+    double p_in = settled_core_pressure(&s, cfg.t_end, radius, 1.0), expected = SIGMA / radius;
     printf("Laplace, R/dr = %.1f: core pressure %.3f Pa over 1-2 s, sigma/R = %.3f Pa "
            "(%+.1f %%), %ld steps\n",
            radius / s.dv.dr, p_in, expected, 100.0 * (p_in / expected - 1.0), s.step);
