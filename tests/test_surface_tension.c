@@ -241,7 +241,8 @@ static void test_patch_curvature(void **state)
 
 /* The force acts in S_F only, and on a body of liquid away from the walls it sums to zero to
  * round-off; over five steps of delta-SPH (whose other forces are pair sums) the momentum of
- * a patch starting at rest stays zero to round-off of sum m |u|. */
+ * a patch starting at rest stays zero to round-off of sum m |u|: within n_fluid DBL_EPSILON
+ * of it, the round-off of a sum of n_fluid terms (measured 2.2e-16 in 2D, 6.9e-16 in 3D). */
 static void test_momentum(void **state)
 {
     (void)state;
@@ -275,7 +276,7 @@ static void test_momentum(void **state)
     printf("%dD patch after 5 steps: |sum m u| = %.2e, sum m |u| = %.2e\n", DIM, vec_norm(momentum),
            scale);
     assert_true(scale > 0.0);
-    assert_true(vec_norm(momentum) <= 1e-12 * scale);
+    assert_true(vec_norm(momentum) <= (double)p->n_fluid * DBL_EPSILON * scale);
     solver_free(&s);
 }
 
