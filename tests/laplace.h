@@ -8,6 +8,31 @@
 
 #include <math.h>
 
+/* Keeps the particles within `radius` of the point (3 radius, 3 radius[, 3 radius]), the centre
+ * of the tanks these tests cut a circle (2D) or a ball (3D) from: a patch clear of every wall
+ * (a 3D case's ellipsoid spans the tank's width; for a 2D circle of that radius, a no-op). */
+static inline void cut_ball(solver *s, double radius)
+{
+    particles *p = &s->p;
+    size_t k = 0;
+    for (size_t i = 0; i < p->n_fluid; i++) {
+        double r2 = 0.0;
+        for (int d = 0; d < DIM; d++) r2 += pow(p->x[d][i] - 3.0 * radius, 2);
+        if (r2 > radius * radius) continue;
+        for (int d = 0; d < DIM; d++) {
+            p->x[d][k] = p->x[d][i];
+            p->u[d][k] = p->u[d][i];
+        }
+        p->m[k] = p->m[i];
+        p->rho[k] = p->rho[i];
+        p->p[k] = p->p[i];
+        p->vol[k] = p->vol[i];
+        p->id[k] = p->id[i];
+        k++;
+    }
+    p->n_fluid = p->n_total = k;
+}
+
 /* Mean pressure of the particles within R/2 of the liquid's centre of mass. */
 static inline double core_pressure(const solver *s, double radius)
 {

@@ -16,6 +16,14 @@ static const char free_sloshing_case[] = "[case]\nname = free-sloshing\ndim = 2\
                                          "[numerics]\nresolution = 16\nsound_speed = 20\n"
                                          "[output]\ntimeseries_every = 0.01\n";
 
+/* free_sloshing_case's first natural period by linear theory (theory §11):
+ * T1 = 2 pi / sqrt(g k tanh(k H)), k = pi / L = 1.2651 s. */
+static inline double free_sloshing_t1(void)
+{
+    double k = M_PI / 1.0;
+    return 2.0 * M_PI / sqrt(9.81 * k * tanh(k * 0.35));
+}
+
 /* The mean spacing of the upward crossings of com_x through its mean, over the rows after
  * `after` (s, once the forcing has stopped); the number of whole cycles in *cycles. */
 static inline double com_x_period(const table *t, double after, int *cycles)

@@ -2,9 +2,10 @@
  * A short sway (one period, A = 1 cm) excites the first mode; afterwards the liquid's centre
  * of mass oscillates with the first natural period, which linear theory gives as
  * T1 = 2 pi / sqrt(g k tanh(k H)), k = pi / L = 1.2651 s (theory §11, paper Fig. 6). The wave
- * is small (A/L = 1 %), so the nonlinear shift of the period is well below 0.1 %; 1 % bounds
- * the discretisation error at this coarse N (measured: 0.3 %). This checks the dynamics end
- * to end: pressure, gravity, walls, the moving-frame force and the time integration. */
+ * is small (A/L = 1 %), so the nonlinear shift of the period is well below 0.1 %; what is
+ * left is the discretisation error at this coarse N: measured -0.18 %, bound 0.55 % (3x). This
+ * checks the dynamics end to end: pressure, gravity, walls, the moving-frame force and the time
+ * integration. */
 #include "app/simulation.h"
 
 #include <setjmp.h>
@@ -27,11 +28,11 @@ static void test_first_mode_period(void **state)
     int cycles;
     double period = com_x_period(&t, 1.5, &cycles);
     assert_true(cycles >= 3);
-    double k = M_PI / 1.0, t1 = 2.0 * M_PI / sqrt(9.81 * k * tanh(k * 0.35));
+    double t1 = free_sloshing_t1();
     printf("free sloshing: period %.4f s over %d cycles, linear theory %.4f s (%.2f %%)\n", period,
            cycles, t1, 100.0 * (period / t1 - 1.0));
     assert_close(t1, 1.2651, 1e-4);
-    assert_close(period, t1, 0.01 * t1);
+    assert_close(period, t1, 3.0 * 0.0018 * t1);
     table_free(&t);
 }
 

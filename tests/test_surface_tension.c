@@ -15,6 +15,7 @@
 #include <cmocka.h>
 
 #include "check.h"
+#include "laplace.h"
 
 #define SIGMA 0.5 /* N/m */
 
@@ -42,29 +43,6 @@ static void load_case(config *cfg, solver *s, double radius, int n, int flat, co
                  SIGMA, scheme, 2 * n);
     if (config_load_string(cfg, text, "test", NULL, 0, err, sizeof err)) fail_msg("%s", err);
     if (solver_init(s, cfg, err, sizeof err)) fail_msg("%s", err);
-}
-
-/* In 3D the liquid of a case spans the tank's width: the ellipsoid of the case is cut to the
- * ball of radius R at the tank's centre (a no-op for the 2D circle). */
-static void cut_ball(solver *s, double radius)
-{
-    particles *p = &s->p;
-    size_t k = 0;
-    for (size_t i = 0; i < p->n_fluid; i++) {
-        double r2 = 0.0;
-        for (int d = 0; d < DIM; d++) r2 += pow(p->x[d][i] - 3.0 * radius, 2);
-        if (r2 > radius * radius) continue;
-        for (int d = 0; d < DIM; d++) {
-            p->x[d][k] = p->x[d][i];
-            p->u[d][k] = p->u[d][i];
-        }
-        p->m[k] = p->m[i];
-        p->rho[k] = p->rho[i];
-        p->vol[k] = p->vol[i];
-        p->id[k] = p->id[i];
-        k++;
-    }
-    p->n_fluid = p->n_total = k;
 }
 
 /* The radius of the disc (ball) of the particles' volume, n dr^d. */
