@@ -7,6 +7,31 @@
 #include "scheme/solver.h"
 
 #include <math.h>
+#include <stdio.h>
+
+/* The patches' liquid: water-like, with sigma = 1 N/m; R = 5 cm in a tank of side 6R */
+#define PATCH_SIGMA  1.0 /* N/m */
+#define PATCH_RHO    1000.0
+#define PATCH_RADIUS 0.05 /* m */
+
+/* A weightless patch of the ellipse (3D: the elliptic cylinder across the width) inscribed in
+ * length x height, centred in a tank of side 0.3 m, delta-plus-SPH without LES, c0 = 2 m/s,
+ * ready to step. */
+static inline void start_patch(config *cfg, solver *s, double length, double height, int resolution,
+                               double nu, double t_end)
+{
+    char text[1024], err[1024];
+    snprintf(text, sizeof text,
+             "[case]\nname = patch\ndim = %d\nt_end = %g\n[tank]\nlength = 0.3\nheight = 0.3\n"
+             "%s[liquid]\nshape = ellipse\nheight = %.17g\nlength = %.17g\nx0 = %.17g\n"
+             "y0 = %.17g\n[fluid]\ndensity = %g\nviscosity = %g\ngravity = 0\n"
+             "surface_tension = %g\n[model]\nscheme = delta-plus\nles = false\n"
+             "[numerics]\nresolution = %d\nsound_speed = 2\n[output]\ntimeseries_every = 0.005\n",
+             DIM, t_end, DIM == 3 ? "width = 0.3\n" : "", height, length, 0.15 - 0.5 * length,
+             0.15 - 0.5 * height, PATCH_RHO, nu, PATCH_SIGMA, resolution);
+    if (config_load_string(cfg, text, "test", NULL, 0, err, sizeof err)) fail_msg("%s", err);
+    if (solver_init(s, cfg, err, sizeof err)) fail_msg("%s", err);
+}
 
 /* Keeps the particles within `radius` of the point (3 radius, 3 radius[, 3 radius]), the centre
  * of the tanks these tests cut a circle (2D) or a ball (3D) from: a patch clear of every wall
@@ -31,6 +56,13 @@ static inline void cut_ball(solver *s, double radius)
         k++;
     }
     p->n_fluid = p->n_total = k;
+}
+
+/* The radius of the disc (ball) of the particles' volume, n dr^d. */
+static inline double equivalent_radius(const solver *s)
+{
+    double v = (double)s->p.n_fluid * s->dv.cell_volume;
+    return DIM == 2 ? sqrt(v / M_PI) : cbrt(3.0 * v / (4.0 * M_PI));
 }
 
 /* Mean pressure of the particles within R/2 of the liquid's centre of mass. */

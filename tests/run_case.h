@@ -60,14 +60,21 @@ static inline void run_case_text(const char *text, const char *const *overrides,
     run_case_config(&cfg, dir, t);
 }
 
-/* The same for the case file cases/NAME.ini of the source tree. */
-static inline void run_case_file(const char *name, const char *const *overrides, int n_overrides,
-                                 char dir[64], table *t)
+/* Loads the case file cases/NAME.ini of the source tree with the --set style overrides. */
+static inline void run_case_load_file(const char *name, const char *const *overrides,
+                                      int n_overrides, config *cfg)
 {
     char path[512], err[1024];
     snprintf(path, sizeof path, "%s/cases/%s.ini", VCSPH_SOURCE_DIR, name);
+    if (config_load(cfg, path, overrides, n_overrides, err, sizeof err)) fail_msg("%s", err);
+}
+
+/* Loads cases/NAME.ini with the overrides (run_case_load_file) and runs it (run_case_config). */
+static inline void run_case_file(const char *name, const char *const *overrides, int n_overrides,
+                                 char dir[64], table *t)
+{
     config cfg;
-    if (config_load(&cfg, path, overrides, n_overrides, err, sizeof err)) fail_msg("%s", err);
+    run_case_load_file(name, overrides, n_overrides, &cfg);
     run_case_config(&cfg, dir, t);
 }
 

@@ -1,5 +1,6 @@
-/* slope: the least-squares line through points, for the tests that measure a rate (an
- * energy's decay, a growth) as the slope of a logarithm in time. */
+/* slope: fits to sampled series: the least-squares line through points, for the tests that
+ * measure a rate (an energy's decay, a growth) as the slope of a logarithm in time, and the
+ * vertex of the parabola through three samples, for the tests that time an extremum. */
 #ifndef VCSPH_TEST_SLOPE_H
 #define VCSPH_TEST_SLOPE_H
 
@@ -28,6 +29,15 @@ static inline double least_squares_slope(const double *x, const double *y, int n
         *error = sqrt(residual2 / (n - 2) / sxx);
     }
     return slope;
+}
+
+/* The vertex of the parabola through (-1, a), (0, b), (1, c): its abscissa (returned, in
+ * sample spacings from b's) and its value (*value). The caller makes sure a - 2b + c != 0. */
+static inline double parabola_vertex(double a, double b, double c, double *value)
+{
+    double shift = 0.5 * (a - c) / (a - 2.0 * b + c);
+    *value = b - 0.25 * (a - c) * shift;
+    return shift;
 }
 
 #endif

@@ -1,5 +1,6 @@
 /* sloshing: the period of a free sloshing oscillation from a time series, for the tests that
- * compare it with linear theory or between runs. Include after <cmocka.h> and "table.h". */
+ * compare it with linear theory or between runs. Include after <cmocka.h>, "table.h" and
+ * "run_case.h". */
 #ifndef VCSPH_TEST_SLOSHING_H
 #define VCSPH_TEST_SLOSHING_H
 
@@ -44,6 +45,24 @@ static inline double com_x_period(const table *t, double after, int *cycles)
     }
     *cycles = crossings - 1;
     return (last - first) / (crossings - 1);
+}
+
+/* free_sloshing_case with the --set style overrides, run: the period of com_x after the
+ * forcing (t > 1.5 s) over at least min_cycles cycles, printed beside linear theory's T1 with
+ * `label`. */
+static inline double free_sloshing_period(const char *const *overrides, int n_overrides,
+                                          int min_cycles, const char *label)
+{
+    char dir[64];
+    table t;
+    run_case_text(free_sloshing_case, overrides, n_overrides, dir, &t);
+    int cycles;
+    double period = com_x_period(&t, 1.5, &cycles), t1 = free_sloshing_t1();
+    assert_true(cycles >= min_cycles);
+    printf("%s: period %.4f s over %d cycles, linear theory %.4f s (%+.2f %%)\n", label, period,
+           cycles, t1, 100.0 * (period / t1 - 1.0));
+    table_free(&t);
+    return period;
 }
 
 #endif

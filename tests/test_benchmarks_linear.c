@@ -15,6 +15,7 @@
 #include "table.h"
 #include "run_case.h"
 #include "linear_sloshing.h"
+#include "slope.h"
 
 #define PI 3.14159265358979323846
 
@@ -30,22 +31,13 @@ static void run_benchmark(const char *name, const char *const *set, int n_set, c
                                     "output.image_every=0", "output.checkpoint_every=0"};
     assert_true(n_set <= MAX_SET);
     for (int k = 0; k < n_set; k++) all[4 + k] = set[k];
-    char path[512], err[1024], dir[64];
-    snprintf(path, sizeof path, "%s/cases/%s.ini", VCSPH_SOURCE_DIR, name);
-    if (config_load(cfg, path, all, 4 + n_set, err, sizeof err)) fail_msg("%s", err);
+    run_case_load_file(name, all, 4 + n_set, cfg);
+    char dir[64], path[128];
     table series;
     run_case_config(cfg, dir, &series);
     table_free(&series);
     snprintf(path, sizeof path, "%s/probes.csv", dir);
     assert_int_equal(table_read(probes, path), 0);
-}
-
-/* the shipped case file as it is (its parameters, nothing run) */
-static void shipped(const char *name, config *cfg)
-{
-    char path[512], err[1024];
-    snprintf(path, sizeof path, "%s/cases/%s.ini", VCSPH_SOURCE_DIR, name);
-    if (config_load(cfg, path, NULL, 0, err, sizeof err)) fail_msg("%s", err);
 }
 
 /* the linear reference of a sway or roll case (docs/roll.md): motion.center's y is the axis's
@@ -89,10 +81,9 @@ static double first_extremum(const double *t, const double *v, size_t n, double 
                              double *value)
 {
     for (size_t k = 1; k + 1 < n; k++) {
-        double a = v[k - 1], b = v[k], c = v[k + 1], curvature = a - 2.0 * b + c;
-        if ((b - a) * (c - b) > 0.0 || fabs(b) < floor || curvature == 0.0) continue;
-        double s = 0.5 * (a - c) / curvature; /* the vertex, in rows from k */
-        *value = b - 0.25 * (a - c) * s;
+        double a = v[k - 1], b = v[k], c = v[k + 1];
+        if ((b - a) * (c - b) > 0.0 || fabs(b) < floor || a - 2.0 * b + c == 0.0) continue;
+        double s = parabola_vertex(a, b, c, value);
         return t[k] + s * (t[k + 1] - t[k]);
     }
     *value = NAN;
@@ -136,7 +127,7 @@ static gauge_comparison compare_gauge(const table *probes, int g, double x, cons
 static void first_rise_within(const char *name, double allowed)
 {
     config cfg;
-    shipped(name, &cfg);
+    run_case_load_file(name, NULL, 0, &cfg); /* as shipped */
     linear_tank m = linear_of(&cfg);
     const double x = cfg.gauges[0], t_hi = linear_reaches(&m, x, cfg.liquid_height / 8.0);
     char t_end[64];
@@ -156,7 +147,7 @@ static void linear_regime_within(const char *name, const char *scaled, double di
                                  double periods, double rms_allowed, double time_allowed)
 {
     config cfg;
-    shipped(name, &cfg);
+    run_case_load_file(name, NULL, 0, &cfg); /* as shipped */
     double value = !strcmp(scaled, "angle") ? cfg.angle : cfg.amplitude;
     char motion[64], t_end[64];
     snprintf(motion, sizeof motion, "motion.%s=%.17g", scaled, value / divisor);
@@ -251,7 +242,7 @@ static void test_upm_bottom_pressure(void **state)
 {
     (void)state;
     config cfg;
-    shipped("upm", &cfg);
+    run_case_load_file("upm", NULL, 0, &cfg); /* as shipped */
     const double w = 2.0 * PI / cfg.period, l = cfg.decay, g = cfg.gravity;
     const double acc0 = cfg.amplitude * (w * w + l * l);
     assert_true(l > 0.0 && acc0 > g);

@@ -22,34 +22,6 @@
 #include "run_case.h"
 #include "laplace.h"
 
-#define SIGMA  1.0 /* N/m */
-#define RHO    1000.0
-#define RADIUS 0.05 /* m */
-
-/* A patch of the ellipse inscribed in length x height, centred in a 0.3 m square tank. */
-static void patch_case(char *text, size_t len, double length, double height, int resolution,
-                       double nu, double t_end)
-{
-    snprintf(text, len,
-             "[case]\nname = patch\ndim = 2\nt_end = %g\n[tank]\nlength = 0.3\nheight = 0.3\n"
-             "[liquid]\nshape = ellipse\nheight = %.17g\nlength = %.17g\nx0 = %.17g\n"
-             "y0 = %.17g\n[fluid]\ndensity = %g\nviscosity = %g\ngravity = 0\n"
-             "surface_tension = %g\n[model]\nscheme = delta-plus\nles = false\n"
-             "[numerics]\nresolution = %d\nsound_speed = 2\n[output]\ntimeseries_every = 0.005\n",
-             t_end, height, length, 0.15 - 0.5 * length, 0.15 - 0.5 * height, RHO, nu, SIGMA,
-             resolution);
-}
-
-/* The solver of a patch_case, ready to step. */
-static void start_patch(config *cfg, solver *s, double length, double height, int resolution,
-                        double nu, double t_end)
-{
-    char text[1024], err[1024];
-    patch_case(text, sizeof text, length, height, resolution, nu, t_end);
-    if (config_load_string(cfg, text, "test", NULL, 0, err, sizeof err)) fail_msg("%s", err);
-    if (solver_init(s, cfg, err, sizeof err)) fail_msg("%s", err);
-}
-
 /* The circle of R / dr = 20 from rest, with nu = 1e-3 (Ohnesorge number
  * nu sqrt(rho / (sigma R)) = 0.14) so that the start's acoustic and capillary transients have
  * decayed by 1 s (the lattice's staircase starts capillary waves of about 0.2 s); the core
@@ -62,9 +34,10 @@ static void test_laplace(void **state)
     (void)state;
     config cfg;
     solver s;
-    start_patch(&cfg, &s, 2.0 * RADIUS, 2.0 * RADIUS, 40, 1e-3, 2.0);
-    double radius = sqrt((double)s.p.n_fluid * s.dv.cell_volume / M_PI);
-    double p_in = settled_core_pressure(&s, cfg.t_end, radius, 1.0), expected = SIGMA / radius;
+    start_patch(&cfg, &s, 2.0 * PATCH_RADIUS, 2.0 * PATCH_RADIUS, 40, 1e-3, 2.0);
+    double radius = equivalent_radius(&s);
+    double p_in = settled_core_pressure(&s, cfg.t_end, radius, 1.0),
+           expected = PATCH_SIGMA / radius;
     printf("Laplace, R/dr = %.1f: core pressure %.3f Pa over 1-2 s, sigma/R = %.3f Pa "
            "(%+.1f %%), %ld steps\n",
            radius / s.dv.dr, p_in, expected, 100.0 * (p_in / expected - 1.0), s.step);
@@ -77,7 +50,8 @@ static void run_ellipse_steps(int threads, double *out)
 {
     config cfg;
     solver s;
-    start_patch(&cfg, &s, 2.0 * RADIUS * sqrt(1.5), 2.0 * RADIUS / sqrt(1.5), 33, 1e-4, 1.0);
+    start_patch(&cfg, &s, 2.0 * PATCH_RADIUS * sqrt(1.5), 2.0 * PATCH_RADIUS / sqrt(1.5), 33, 1e-4,
+                1.0);
     omp_set_num_threads(threads);
     for (int k = 0; k < 200; k++) assert_int_equal(solver_step(&s, cfg.t_end), 0);
     size_t n = s.p.n_fluid;

@@ -43,6 +43,7 @@
 #include <cmocka.h>
 
 #include "check.h"
+#include "laplace.h"
 #include "slope.h"
 
 #define SIGMA 0.0727 /* N/m */
@@ -182,7 +183,7 @@ static void check_drop(const char *shape, const char *reference, double length, 
     config cfg;
     solver s;
     start_drop(&cfg, &s, shape, length, height, scheme);
-    double radius = sqrt((double)s.p.n_fluid * s.dv.cell_volume / M_PI);
+    double radius = equivalent_radius(&s);
     double lamb = 2.0 * M_PI / sqrt(6.0 * SIGMA / (RHO * pow(radius, 3)));
     double umax = 0.0, worst_angular = 0.0, worst_eps = 0.0, mass = 0.0;
     size_t free0 = 0, free_lo = SIZE_MAX, free_hi = 0;

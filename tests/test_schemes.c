@@ -135,13 +135,14 @@ static void test_scheme_band(void **state)
     size_t last = t.n_rows - 1;
     double mass = max_abs(table_column(&t, "mass_err"), t.n_rows);
     double mean = mean_over(&t, "eps_v1", 0.2, 0.4), dissipated = ediss[last] / work_in[last];
-    double least_ediss = INFINITY, edbc_rows = 0;
+    double least_ediss = INFINITY;
+    int edbc_rows = 0;
     for (size_t r = 0; r < t.n_rows; r++) {
         least_ediss = fmin(least_ediss, ediss[r]);
         edbc_rows += n_edbc[r] > 0;
     }
     printf("%s: mean eps_v1 %+.4f %% over (0.2, 0.4] s (band %+.4f +- %.4f), ediss / work_in "
-           "%.3f (band %.3f +- %.3f), n_edbc > 0 in %g rows, least ediss %.2e J, "
+           "%.3f (band %.3f +- %.3f), n_edbc > 0 in %d rows, least ediss %.2e J, "
            "max |mass_err| %.1e\n",
            band->scheme, 100 * mean, 100 * band->mean_eps, 100 * band->mean_tol, dissipated,
            band->dissipated, band->diss_tol, edbc_rows, least_ediss, mass);
@@ -153,10 +154,7 @@ static void test_scheme_band(void **state)
     assert_close(mean, band->mean_eps, band->mean_tol);
     assert_close(dissipated, band->dissipated, band->diss_tol);
     assert_true(least_ediss >= -1.2e-6);
-    if (band->edbc_acts)
-        assert_true(edbc_rows > 0);
-    else
-        assert_true(edbc_rows == 0);
+    assert_true(band->edbc_acts ? edbc_rows > 0 : edbc_rows == 0);
     table_free(&t);
 }
 

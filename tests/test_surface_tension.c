@@ -45,13 +45,6 @@ static void load_case(config *cfg, solver *s, double radius, int n, int flat, co
     if (solver_init(s, cfg, err, sizeof err)) fail_msg("%s", err);
 }
 
-/* The radius of the disc (ball) of the particles' volume, n dr^d. */
-static double equivalent_radius(const solver *s)
-{
-    double v = (double)s->p.n_fluid * s->dv.cell_volume;
-    return DIM == 2 ? sqrt(v / M_PI) : cbrt(3.0 * v / (4.0 * M_PI));
-}
-
 /* Across the flat surface of a lattice block, sum delta V per unit area is 1 (the
  * calibration of theory §4; the block's 6R is a whole number of dr here), and the curvature
  * is zero: every normal is vertical. Both to round-off: the sum of n_fluid terms within

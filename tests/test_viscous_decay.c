@@ -43,6 +43,7 @@
 #include "check.h"
 #include "table.h"
 #include "run_case.h"
+#include "sloshing.h"
 #include "slope.h"
 
 #define LENGTH     1.0  /* m */
@@ -54,16 +55,6 @@
 #define NU_LOW     2.5e-3
 #define NU_NONE    1e-6
 #define MAX_PEAKS  64
-
-/* the tank of LENGTH x DEPTH at RESOLUTION, the sway at the linear period 2 pi / frequency() */
-static const char wave_case[] = "[case]\nname = viscous-decay\ndim = 2\nt_end = 7.5\n"
-                                "[tank]\nlength = 1.0\nheight = 1.0\n"
-                                "[liquid]\nheight = 0.35\n"
-                                "[motion]\ntype = sway\namplitude = 0.01\n"
-                                "period = 1.2651\nduration = 1.2651\n"
-                                "[model]\nscheme = delta\n"
-                                "[numerics]\nresolution = 24\nsound_speed = 20\n"
-                                "[output]\ntimeseries_every = 0.01\n";
 
 static double wavenumber(void) { return M_PI / LENGTH; }
 
@@ -98,10 +89,10 @@ static void find_peaks(const table *t, wave *w)
             if (sign != 0 && best != 0 && w->n < MAX_PEAKS) {
                 double a = fabs(com_x[best - 1] - 0.5 * LENGTH);
                 double b = fabs(com_x[best] - 0.5 * LENGTH);
-                double c = fabs(com_x[best + 1] - 0.5 * LENGTH), curve = a - 2.0 * b + c;
-                double shift = curve != 0.0 ? 0.5 * (a - c) / curve : 0.0;
+                double c = fabs(com_x[best + 1] - 0.5 * LENGTH), peak = b, shift = 0.0;
+                if (a - 2.0 * b + c != 0.0) shift = parabola_vertex(a, b, c, &peak);
                 w->t[w->n] = time[best] + shift * (time[best + 1] - time[best]);
-                w->amplitude[w->n++] = b - 0.25 * (a - c) * shift;
+                w->amplitude[w->n++] = peak;
             }
             best = sign != 0 ? r : 0; /* the half cycle cut by FIT_FROM does not count */
             sign = s;
@@ -127,14 +118,17 @@ static const wave *run_wave(double nu, const char *wall, const char *les)
     assert_true(n_runs < 8);
     wave *w = &runs[n_runs++];
     w->nu = nu, w->wall = wall, w->les = les;
-    char set_nu[64], set_wall[64], set_les[64];
+    char set_n[64], set_nu[64], set_wall[64], set_les[64];
+    snprintf(set_n, sizeof set_n, "numerics.resolution=%d", RESOLUTION);
     snprintf(set_nu, sizeof set_nu, "fluid.viscosity=%.17g", nu);
     snprintf(set_wall, sizeof set_wall, "model.wall=%s", wall);
     snprintf(set_les, sizeof set_les, "model.les=%s", les);
-    const char *sets[] = {set_nu, set_wall, set_les};
+    /* sloshing.h's free sloshing (the tank of LENGTH x DEPTH, one period of sway at the linear
+       period 2 pi / frequency()), at RESOLUTION and longer */
+    const char *sets[] = {set_n, "case.t_end=7.5", set_nu, set_wall, set_les};
     char dir[64];
     table t;
-    run_case_text(wave_case, sets, 3, dir, &t);
+    run_case_text(free_sloshing_case, sets, 5, dir, &t);
     find_peaks(&t, w);
     table_free(&t);
     printf("nu = %g m^2/s, %s, LES %s: gamma = %.5f +- %.5f 1/s over %d half cycles, "
