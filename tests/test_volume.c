@@ -115,7 +115,8 @@ static void test_block_at_rest(void **state)
  * lattice spacing, dr here (the box holds whole numbers of dr), to round-off, and nothing
  * clumped; then one top-layer particle moved to 0.3 dr beside its neighbour along x makes
  * exactly those two clumped (a pair closer than dr/2), and their distances pull the free
- * surface's mean below 1 by (1 - 0.3) 2 / n_free. */
+ * surface's mean below 1 by (1 - 0.3) 2 / n_free and its 5th percentile to between them and
+ * the rest. */
 static void test_block_packing(void **state)
 {
     (void)state;
@@ -131,6 +132,10 @@ static void test_block_packing(void **state)
     assert_close(sp.nearest_free, 1.0, 1e-12);
     assert_close(sp.nearest_band, 1.0, 1e-12);
     assert_close(sp.nearest_interior, 1.0, 1e-12);
+    double median, p05;
+    surface_nearest_quantiles(&s.pp.k, p, &s.nl, dr, NULL, s.scratch, &median, &p05);
+    assert_close(median, 1.0, 1e-12);
+    assert_close(p05, 1.0, 1e-12);
     /* a top-layer particle away from the walls, and its neighbour at +dr along x */
     size_t mover = p->n_fluid, target = p->n_fluid;
     for (size_t i = 0; i < p->n_fluid && mover == p->n_fluid; i++)
@@ -149,6 +154,16 @@ static void test_block_packing(void **state)
     assert_int_equal(sp.n_clumped, 2);
     /* the mover's left neighbour now has its nearest at dr still (the one below) */
     assert_close(sp.nearest_free, 1.0 - 2.0 * 0.7 / (double)sp.n_free, 1e-12);
+    /* sorted, the free surface's distances are 0.3, 0.3, then 1s: the median is 1 and the 5th
+       percentile lies 0.05 (n - 1) into them, linear between neighbours (numpy.percentile's
+       rule): between the second 0.3 and the first 1 in 2D (n = 40), on the 1s in 3D */
+    surface_nearest_quantiles(&s.pp.k, p, &s.nl, dr, NULL, s.scratch, &median, &p05);
+    double position = 0.05 * (double)(sp.n_free - 1);
+    double expected = position <= 1.0 ? 0.3 : position < 2.0 ? 0.3 + (position - 1.0) * 0.7 : 1.0;
+    printf("%dD block, one pair at 0.3 dr: fs_nn_median %.4f, fs_nn_p05 %.4f of %ld\n", DIM, median,
+           p05, sp.n_free);
+    assert_close(median, 1.0, 1e-12);
+    assert_close(p05, expected, 1e-12);
     solver_free(&s);
 }
 

@@ -6,6 +6,7 @@
 #include "boundary/tank.h"
 #include "core/log.h"
 #include "diag/energy.h"
+#include "diag/packing.h"
 #include "diag/probes.h"
 #include "diag/volume.h"
 #include "io/csv.h"
@@ -27,7 +28,7 @@ static const char timeseries_header[] =
     "t,step,dt,n_fluid,eps_v1,eps_v2,eps_v3,eps_gm,eps_sph,mass_err,eta,edbc,n_edbc,"
     "n_free_surface,ekin,epot,eint,work_in,ediss,com_x,com_y,com_z,xmin,xmax,ymax,umax,"
     "rho_min,rho_max,esurf,work_st,deps_u,deps_du,deps_corr,angmom_x,angmom_y,angmom_z,"
-    "work_moves,eps_fs";
+    "work_moves,eps_fs,fs_nn_median,fs_nn_p05";
 
 /* The fields the probes read, and those tank_make_ghosts and tank_refresh_ghosts read to
  * make the walls' images the probes read. */
@@ -331,11 +332,18 @@ void run_write_series_row(run *r, int with_geometry)
     }
     for (int d = 0; d < 3; d++) csv_put(c, dg.angmom[d]);
     csv_put(c, s->work_moves);
-    if (with_geometry)
+    if (with_geometry) {
         csv_put(c, volume_free_surface_packing(&s->p, s->dv.cell_volume, s->pp.surface_kernel_sum,
                                                s->scratch, solver_reducer(s)));
-    else
-        csv_put_empty(c);
+        double median, p05;
+        neighbour_list rows = solver_prepared_rows(s);
+        surface_nearest_quantiles(&s->pp.k, &s->p, &rows, s->dv.dr, r->team, s->scratch, &median,
+                                  &p05);
+        csv_put_number(c, median);
+        csv_put_number(c, p05);
+    } else {
+        for (int k = 0; k < 3; k++) csv_put_empty(c);
+    }
     csv_end_row(c);
 
     /* Eq. (6): the sound speed assumes speeds below c0/10 */

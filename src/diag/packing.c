@@ -1,18 +1,21 @@
 /* packing: the free-surface particles' nearest neighbours (packing.h). */
 #include "diag/packing.h"
 #include "core/pair.h"
+#include "core/quantile.h"
 #include "diag/freesurface.h"
 
 #include <math.h>
 
-/* The distance to i's nearest fluid neighbour within 2h, or 0 when it has none. */
+/* The distance to i's nearest fluid neighbour within 2h (another process's, in the halo,
+ * included), or 0 when it has none. */
 static double nearest_fluid_neighbour(const kernel *k, const particles *p, const neighbour_list *nl,
                                       size_t i)
 {
     vec xi = vec_load(p->x, i);
     double nearest = INFINITY;
+    size_t fluid_end = particles_images_begin(p);
     pair pr;
-    FOR_EACH_PAIR_WHERE (k, p->x, nl, i, xi, pr, pr.j < p->n_fluid)
+    FOR_EACH_PAIR_WHERE (k, p->x, nl, i, xi, pr, pr.j < fluid_end)
         if (pr.r < nearest) nearest = pr.r;
     return isinf(nearest) ? 0.0 : nearest;
 }
@@ -46,4 +49,26 @@ void surface_packing_compute(const kernel *k, const particles *p, const neighbou
     out->nearest_free = class_mean(p, nearest, SURFACE_FREE);
     out->nearest_band = class_mean(p, nearest, SURFACE_REGION);
     out->nearest_interior = class_mean(p, nearest, SURFACE_INTERIOR);
+}
+
+void surface_nearest_quantiles(const kernel *k, const particles *p, const neighbour_list *nl,
+                               double dr, const run_team *team, double *scratch, double *median,
+                               double *p05)
+{
+#pragma omp parallel for schedule(static)
+    for (size_t i = 0; i < p->n_fluid; i++)
+        scratch[i] =
+            p->surface[i] == SURFACE_FREE ? nearest_fluid_neighbour(k, p, nl, i) / dr : 0.0;
+    size_t n = 0;
+    for (size_t i = 0; i < p->n_fluid; i++)
+        if (scratch[i] > 0.0) scratch[n++] = scratch[i];
+    double *all = scratch, *gathered = NULL;
+    if (team) all = gathered = team->gather(team, scratch, n, sizeof *scratch, &n);
+    *median = *p05 = NAN;
+    if (all) {
+        quantile_sort(all, n);
+        *median = quantile_sorted(all, n, 0.5);
+        *p05 = quantile_sorted(all, n, 0.05);
+    }
+    free(gathered);
 }

@@ -3,6 +3,7 @@
 #include "io/atomic_file.h"
 
 #include <errno.h>
+#include <math.h>
 #include <stdbool.h>
 #include <stdlib.h>
 #include <string.h>
@@ -127,6 +128,14 @@ void csv_put_long(csv_file *c, long value)
 }
 
 void csv_put_empty(csv_file *c) { separator(c); }
+
+void csv_put_number(csv_file *c, double value)
+{
+    if (isnan(value))
+        csv_put_empty(c);
+    else
+        csv_put(c, value);
+}
 
 void csv_put_text(csv_file *c, const char *text)
 {

@@ -31,6 +31,7 @@ int csv_sync(csv_file *c);
 void csv_put(csv_file *c, double value); /* %.10g */
 void csv_put_long(csv_file *c, long value);
 void csv_put_empty(csv_file *c);                  /* a quantity not computed in this run */
+void csv_put_number(csv_file *c, double value);   /* csv_put, or empty for NaN (none to count) */
 void csv_put_text(csv_file *c, const char *text); /* quoted when it holds , or " */
 /* Ends the row and flushes it; a failure is kept in c->error (csv_error). */
 void csv_end_row(csv_file *c);
