@@ -357,6 +357,8 @@ static const ini_key keys[] = {
         "Smagorinsky eddy viscosity (Eq. 4) with van Driest wall damping"),
     KEY("model", "wall", INI_WORD, 0, "no-slip", wall, ANY, wall_words,
         "one of no-slip | free-slip", "velocity condition of the walls for the viscous term"),
+    KEY("model", "surface_unpacking", INI_BOOL, 0, "false", surface_unpacking, ANY, bool_words,
+        "true or false", "vcsph's inward shift of a free surface packed tighter than a flat one"),
 
     KEY("numerics", "resolution", INI_INT, INI_REQUIRED, NULL, resolution, CLOSED(4, INT_MAX), NULL,
         "an integer >= 4 (particles across liquid.height)",
@@ -467,6 +469,10 @@ static void resolve_defaults(ini_session *ctx)
     if (cfg->edbc == EDBC_AUTO) cfg->edbc = plus_ale ? EDBC_WITH_ETA0 : EDBC_OFF;
     if (cfg->volume_correction == VOLUME_CORRECTION_AUTO)
         cfg->volume_correction = plus_ale ? VOLUME_CORRECTION_GEOMETRIC : VOLUME_CORRECTION_NONE;
+    if (cfg->surface_unpacking && (cfg->scheme == SCHEME_STANDARD || cfg->scheme == SCHEME_DELTA))
+        ini_fail_key(ctx, ini_key_of(ctx, "model", "surface_unpacking"),
+                     "needs particle shifting: model.scheme = delta-plus, delta-ale or "
+                     "delta-plus-ale");
     if (!expand_name(cfg->output_dir, sizeof cfg->output_dir, cfg->name))
         ini_fail_key(ctx, ini_key_of(ctx, "output", "dir"), "too long once '<name>' is replaced");
 }

@@ -78,6 +78,7 @@ typedef struct {
     eta_control_kind eta_control;
     bool les;
     wall_kind wall;
+    bool surface_unpacking;
     /* [numerics] */
     int resolution;
     double h_over_dr;

@@ -39,6 +39,22 @@ static inline vec shifting_limit(vec du, double max_relative_speed, double u_max
     return norm > cap ? vec_scale(du, cap / norm) : du;
 }
 
+/* model.surface_unpacking (vcsph's, not the paper's): a free-surface particle whose kernel sum
+ * S_i = sum_j W_ij V_i0 exceeds S_flat, that of a flat lattice surface's top row, sits in a
+ * layer packed tighter than the liquid: more particles per unit of surface than a lattice row
+ * (they hold V_i0 S_flat / S_i each, what eps_fs counts). Eq. (7) cannot thin such a layer: its
+ * shift is tangential there and a gradient has no component along an evenly packed line. This
+ * shift moves the particle inwards along its unit normal at SURFACE_UNPACK_RATE U_max per unit
+ * of excess S_i / S_flat - 1, so that the layer hands its surplus to the liquid below, where the
+ * geometric volume correction counts it (docs/volume.md, "The surface layer"). */
+#define SURFACE_UNPACK_RATE 0.1
+
+static inline vec surface_unpacking_shift(double sum_ratio, double speed, vec unit_normal)
+{
+    double excess = sum_ratio - 1.0;
+    return excess > 0.0 ? vec_scale(unit_normal, -speed * excess) : vec_zero();
+}
+
 /* Near the free surface the normal component is removed, so that shifting does not move the
  * surface (theory §4): (I - n (x) n) du. */
 static inline vec shifting_tangential(vec du, vec normal)

@@ -22,6 +22,8 @@ typedef struct {
     double surface_kernel_sum; /* dr^n sum W of a flat lattice surface's top row (eps_fs) */
     double shift_u_max;        /* U_max of Eq. (7): the reference speed c0 / 10 of Eq. (6) */
     double w_dr;               /* W(dr) of Eq. (7) */
+    double unpack_speed;       /* model.surface_unpacking: SURFACE_UNPACK_RATE U_max, else 0 */
+    double surface_sum_scale;  /* V_i0 / surface_kernel_sum: S_i / S_flat per unit sum W_ij */
     double delta_c0_h;         /* delta c0 h of D^m, Eq. (5) */
     bool les;                  /* Smagorinsky eddy viscosity */
     bool van_driest;           /* damp it near no-slip walls */

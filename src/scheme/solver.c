@@ -5,6 +5,7 @@
 #include "diag/freesurface.h"
 #include "diag/health.h"
 #include "physics/eos.h"
+#include "physics/shifting.h"
 #include "physics/viscosity.h"
 #include "scheme/case_numbers.h"
 #include "scheme/models.h"
@@ -36,6 +37,8 @@ static void physics_setup(solver *s)
     pp->lattice_kernel_sum = kernel_lattice_sum(&pp->k, pp->dr, 0);
     pp->surface_kernel_sum = kernel_lattice_sum(&pp->k, pp->dr, 1);
     pp->w_dr = kernel_w(&pp->k, pp->dr);
+    pp->unpack_speed = cfg->surface_unpacking ? SURFACE_UNPACK_RATE * pp->shift_u_max : 0.0;
+    pp->surface_sum_scale = s->dv.cell_volume / pp->surface_kernel_sum;
     pp->delta_c0_h = mp.delta * pp->c0 * pp->k.h;
     pp->les = cfg->les;
     pp->van_driest = cfg->les && cfg->wall == WALL_NO_SLIP;
