@@ -76,12 +76,36 @@ static void test_motion_frame_of_sway(void **state)
     motion_free(&mo);
 }
 
+/* motion.settling: no damping while the tank moves; after motion.duration the force on a
+ * particle moving at u gains exactly -settling u (and the tank's acceleration is 0 then). */
+static void test_settling_after_the_motion(void **state)
+{
+    (void)state;
+    config cfg = {.motion = MOTION_SWAY,
+                  .amplitude = 0.1,
+                  .period = 1.0,
+                  .duration = 2.0,
+                  .settling = 1.5,
+                  .gravity = 9.81};
+    motion mo;
+    char err[256];
+    assert_int_equal(motion_init(&mo, &cfg, err, sizeof err), 0);
+    vec r = vec_of(0.5, 0.1, 0.0), u = vec_of(0.4, -0.2, 0.1);
+    tank_frame during = motion_frame(&mo, cfg.gravity, 1.9), after = motion_frame(&mo, 9.81, 2.1);
+    assert_true(during.damping == 0.0 && after.damping == 1.5);
+    vec force = frame_body_force(&after, r, u);
+    for (int d = 0; d < DIM; d++)
+        assert_close(force.c[d], (d == 1 ? -9.81 : 0.0) - 1.5 * u.c[d], 1e-15);
+    motion_free(&mo);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_translation_is_uniform),
         cmocka_unit_test(test_rotation_terms),
         cmocka_unit_test(test_motion_frame_of_sway),
+        cmocka_unit_test(test_settling_after_the_motion),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

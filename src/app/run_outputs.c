@@ -231,6 +231,8 @@ void run_write_probes_row(run *r)
             csv_put(c, x[3] > 0.0 ? probes_sensor(&r->probes, p, x, x[3], config_wall_axis(cfg, x))
                                   : probes_pressure(&r->probes, p, x));
         }
+        for (int k = 0; k < cfg->n_gauges; k++)
+            csv_put_number(c, probes_level(&r->probes, p, cfg->gauges[k]));
         csv_end_row(c);
     }
     if (r->split) run_gathered_free(r, &rebuilt);
@@ -574,17 +576,20 @@ static int open_csv(run *r, int k, const char *header)
     return csv_open(run_csv(r, k), path, header);
 }
 
-/* probes.csv with the header t,gauge_1..,pressure_1.. (docs/case-file.md) */
+/* probes.csv with the header t,gauge_1..,pressure_1..,level_1.. (docs/outputs.md) */
 static int open_probes(run *r)
 {
     const config *cfg = r->cfg;
-    char header[32 + 24 * 2 * CONFIG_PROBES_MAX];
+    char header[32 + 24 * 3 * CONFIG_PROBES_MAX];
     int len = snprintf(header, sizeof header, "t");
     for (int k = 0; k < cfg->n_gauges; k++)
         len += snprintf(header + len, sizeof header - (size_t)len, ",gauge_%d", k + 1);
     for (int k = 0; k < cfg->n_pressure_probes; k++)
         len += snprintf(header + len, sizeof header - (size_t)len, ",pressure_%d", k + 1);
-    probes_init(&r->probes, r->s.dv.h, cfg->dim == 3 ? cfg->tank_width : 1.0);
+    for (int k = 0; k < cfg->n_gauges; k++)
+        len += snprintf(header + len, sizeof header - (size_t)len, ",level_%d", k + 1);
+    probes_init(&r->probes, r->s.dv.h, r->s.dv.dr, r->s.dv.cell_volume,
+                cfg->dim == 3 ? cfg->tank_width : 1.0);
     return open_csv(r, RUN_CSV_PROBES, header);
 }
 

@@ -8,7 +8,9 @@
  * (translation, Euler, centrifugal and Coriolis terms), with r measured from the point
  * `center` on the rotation axis and a0 that point's acceleration. A tank that only translates
  * (sway, heave, a table of positions) has Omega = 0 and f = g - a0 everywhere, the g_eff of
- * theory §6; a rolling, pitching or yawing one fills in Omega, dOmega/dt and turns g. */
+ * theory §6; a rolling, pitching or yawing one fills in Omega, dOmega/dt and turns g. After
+ * the motion stops (motion.duration), motion.settling > 0 adds the damping -settling u, a
+ * numerical aid that brings the liquid to rest; it is no physics of the tank. */
 #ifndef VCSPH_FRAME_H
 #define VCSPH_FRAME_H
 
@@ -22,6 +24,7 @@ typedef struct {
     double omega[3];      /* angular velocity (rad/s); in 2D only omega[2] */
     double omega_dot[3];  /* angular acceleration (rad/s^2) */
     bool rotating;        /* Omega or dOmega/dt not zero */
+    double damping;       /* 1/s: the body force -damping u (motion.settling), 0 mostly */
 } tank_frame;
 
 /* a x b of two 3-vectors */
@@ -75,6 +78,7 @@ static inline vec frame_translation_force(const tank_frame *f)
 static inline vec frame_body_force(const tank_frame *f, vec r, vec u)
 {
     vec force = frame_translation_force(f);
+    if (f->damping > 0.0) force = vec_axpy(force, -f->damping, u);
     if (!f->rotating) return force;
     double r3[3] = {0.0, 0.0, 0.0}, u3[3] = {0.0, 0.0, 0.0}, rotation[3], coriolis[3];
     for (int d = 0; d < DIM; d++) r3[d] = r.c[d] - f->center[d], u3[d] = u.c[d];

@@ -198,6 +198,7 @@ void motion_rotation(const motion *mo, double t, double r[3][3])
 tank_frame motion_frame(const motion *mo, double gravity, double t)
 {
     tank_frame f = {.gravity = {0.0, -gravity, 0.0}, .rotating = false};
+    if (mo->duration > 0.0 && t > mo->duration) f.damping = mo->settling;
     motion_acceleration(mo, t, f.origin_acc);
     memcpy(f.center, mo->center, sizeof f.center);
     if (!mo->rotates) return f;
@@ -566,6 +567,7 @@ int motion_init(motion *mo, const config *cfg, char *err, size_t err_len)
     mo->phase = cfg->phase;
     mo->angle_phase = cfg->angle_phase;
     mo->duration = cfg->duration;
+    mo->settling = cfg->settling;
     memcpy(mo->center, cfg->motion_center, sizeof mo->center);
     mo->reach = reach_of(cfg, mo->center);
     if (mo->kind != MOTION_TABLE) return 0;

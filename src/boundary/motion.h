@@ -19,6 +19,7 @@ typedef struct {
     motion_kind kind;
     int translation, rotation; /* the harmonic motion's channels, -1 when none */
     double amplitude, angle, omega, decay, phase, angle_phase, duration; /* duration 0: whole run */
+    double settling;  /* the frame's damping after `duration` (1/s) */
     double center[3]; /* the rotation axis's point, tank coordinates (m) */
     double reach;     /* largest distance from center to a corner of the tank (m) */
     bool rotates;     /* a rotation channel is driven */

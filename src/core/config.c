@@ -334,6 +334,9 @@ static const ini_key keys[] = {
     KEY("motion", "duration", INI_REAL, 0, "0.0", duration, NON_NEGATIVE, NULL,
         "a time >= 0 (s; 0 = whole run)",
         "time after which the tank stops accelerating (keeps its velocity)"),
+    KEY("motion", "settling", INI_REAL, 0, "0.0", settling, NON_NEGATIVE, NULL,
+        "a rate >= 0 (1/s; 0 = none); > 0 needs motion.duration > 0",
+        "after motion.duration, a body force -rate u that settles the liquid"),
     KEY("motion", "file", INI_PATH, 0, "", motion_file, ANY, NULL,
         "a readable CSV file, header t then any of x,y,z,roll,pitch,yaw; only for type = table",
         "CSV of the tank displacement and angles against time for type = table"),
@@ -469,6 +472,9 @@ static void resolve_defaults(ini_session *ctx)
     if (cfg->edbc == EDBC_AUTO) cfg->edbc = plus_ale ? EDBC_WITH_ETA0 : EDBC_OFF;
     if (cfg->volume_correction == VOLUME_CORRECTION_AUTO)
         cfg->volume_correction = plus_ale ? VOLUME_CORRECTION_GEOMETRIC : VOLUME_CORRECTION_NONE;
+    if (cfg->settling > 0.0 && cfg->duration <= 0.0)
+        ini_fail_key(ctx, ini_key_of(ctx, "motion", "settling"),
+                     "settles the liquid after the motion stops: set motion.duration > 0");
     if (cfg->surface_unpacking && (cfg->scheme == SCHEME_STANDARD || cfg->scheme == SCHEME_DELTA))
         ini_fail_key(ctx, ini_key_of(ctx, "model", "surface_unpacking"),
                      "needs particle shifting: model.scheme = delta-plus, delta-ale or "

@@ -63,6 +63,7 @@ typedef struct {
     /* [motion] */
     motion_kind motion;
     double amplitude, period, decay, phase, duration;
+    double settling;           /* 1/s: -settling u after `duration` (0: none) */
     double angle, angle_phase; /* rotation amplitude (rad) and its phase beyond `phase` */
     double motion_center[3];   /* the rotation axis's point, tank coordinates (m) */
     char motion_file[CONFIG_PATH_MAX];

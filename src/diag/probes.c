@@ -4,6 +4,7 @@
 #include "diag/probes.h"
 
 #include <math.h>
+#include <stdlib.h>
 
 /* sub-intervals of the Simpson rule for one value of the projected kernel (even) */
 #define PROJECTION_INTERVALS 512
@@ -23,9 +24,11 @@ static double projected_kernel(const kernel *k, double s)
     return 2.0 * sum * step / 3.0;
 }
 
-void probes_init(probes *pr, double h, double tank_width)
+void probes_init(probes *pr, double h, double dr, double cell_volume, double tank_width)
 {
     pr->k = kernel_make(h);
+    pr->colour = kernel_make(dr);
+    pr->cell_volume = cell_volume;
     pr->centre_z = 0.5 * tank_width;
     for (int i = 0; i <= PROBES_TABLE; i++)
         pr->projected[i] = projected_kernel(&pr->k, 2.0 * h * i / PROBES_TABLE);
@@ -69,6 +72,56 @@ double probes_gauge(const probes *pr, const particles *p, double x)
         if (counts_for_gauge(p, j))
             depth += p->vol[j] * projected_at(pr, distance_to_line(pr, p, j, x));
     return depth;
+}
+
+/* The particles within the colour kernel's reach of a gauge's line: their height and squared
+ * distance to the line. */
+typedef struct {
+    double y, s2;
+} line_particle;
+
+/* C at height y on the line, from its particles */
+static double colour_at(const probes *pr, const line_particle *near, size_t n, double y)
+{
+    double c = 0.0;
+    for (size_t m = 0; m < n; m++) {
+        double dy = near[m].y - y, r2 = near[m].s2 + dy * dy;
+        if (r2 < pr->colour.support2) c += kernel_w(&pr->colour, sqrt(r2));
+    }
+    return c * pr->cell_volume;
+}
+
+double probes_level(const probes *pr, const particles *p, double x)
+{
+    double reach2 = pr->colour.support2, reach = sqrt(reach2);
+    line_particle *near = malloc(p->n_total * sizeof *near);
+    if (!near) return NAN;
+    size_t n = 0;
+    double top = -INFINITY, bottom = INFINITY;
+    for (size_t j = 0; j < p->n_total; j++) {
+        double s = distance_to_line(pr, p, j, x);
+        if (s * s >= reach2) continue;
+        near[n++] = (line_particle){p->x[1][j], s * s};
+        top = fmax(top, p->x[1][j]);
+        bottom = fmin(bottom, p->x[1][j]);
+    }
+    /* down the line from above every particle in steps of h_c / 8, then bisection */
+    double step = 0.125 * pr->colour.h, above = top + reach, level = 0.0;
+    for (double below = above - step; n > 0 && below > bottom - reach - step;
+         above = below, below -= step) {
+        if (colour_at(pr, near, n, below) < 0.5) continue;
+        while (above - below > 1e-3 * pr->colour.h) {
+            double mid = 0.5 * (above + below);
+            if (colour_at(pr, near, n, mid) >= 0.5)
+                below = mid;
+            else
+                above = mid;
+        }
+        level = 0.5 * (above + below);
+        break;
+    }
+    free(near);
+    return level;
 }
 
 double probes_pressure(const probes *pr, const particles *p, const double x[3])
