@@ -6,6 +6,8 @@
 
 #include "scheme/solver.h"
 
+#include "keep_particles.h"
+
 #include <math.h>
 #include <stdio.h>
 
@@ -33,29 +35,21 @@ static inline void start_patch(config *cfg, solver *s, double length, double hei
     if (solver_init(s, cfg, err, sizeof err)) fail_msg("%s", err);
 }
 
+/* Whether x lies within `radius` of centre, its boundary included. */
+static inline bool within_ball(const double *x, const double *centre, double radius)
+{
+    double r2 = 0.0;
+    for (int d = 0; d < DIM; d++) r2 += (x[d] - centre[d]) * (x[d] - centre[d]);
+    return r2 <= radius * radius;
+}
+
 /* Keeps the particles within `radius` of the point (3 radius, 3 radius[, 3 radius]), the centre
  * of the tanks these tests cut a circle (2D) or a ball (3D) from: a patch clear of every wall
  * (a 3D case's ellipsoid spans the tank's width; for a 2D circle of that radius, a no-op). */
 static inline void cut_ball(solver *s, double radius)
 {
-    particles *p = &s->p;
-    size_t k = 0;
-    for (size_t i = 0; i < p->n_fluid; i++) {
-        double r2 = 0.0;
-        for (int d = 0; d < DIM; d++) r2 += pow(p->x[d][i] - 3.0 * radius, 2);
-        if (r2 > radius * radius) continue;
-        for (int d = 0; d < DIM; d++) {
-            p->x[d][k] = p->x[d][i];
-            p->u[d][k] = p->u[d][i];
-        }
-        p->m[k] = p->m[i];
-        p->rho[k] = p->rho[i];
-        p->p[k] = p->p[i];
-        p->vol[k] = p->vol[i];
-        p->id[k] = p->id[i];
-        k++;
-    }
-    p->n_fluid = p->n_total = k;
+    const double centre[3] = {3.0 * radius, 3.0 * radius, 3.0 * radius};
+    keep_particles(s, within_ball, centre, radius);
 }
 
 /* The radius of the disc (ball) of the particles' volume, n dr^d. */

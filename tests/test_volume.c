@@ -13,6 +13,7 @@
 #include <cmocka.h>
 
 #include "check.h"
+#include "keep_particles.h"
 
 #define STR_(x)  #x
 #define STR(x)   STR_(x)
@@ -217,29 +218,7 @@ static void test_free_surface_packing(void **state)
     solver_free(&s);
 }
 
-/* Keeps the fluid particles for which keep() holds (the store is compacted in place). */
-static void keep_only(solver *s, int (*keep)(const double *x, const double *centre, double r),
-                      const double *centre, double radius)
-{
-    particles *p = &s->p;
-    size_t k = 0;
-    for (size_t i = 0; i < p->n_fluid; i++) {
-        double x[DIM];
-        for (int d = 0; d < DIM; d++) x[d] = p->x[d][i];
-        if (!keep(x, centre, radius)) continue;
-        for (int d = 0; d < DIM; d++) {
-            p->x[d][k] = p->x[d][i];
-            p->u[d][k] = p->u[d][i];
-        }
-        p->rho[k] = p->rho[i];
-        p->m[k] = p->m[i];
-        p->id[k] = p->id[i];
-        k++;
-    }
-    p->n_fluid = p->n_total = k;
-}
-
-static int inside_ball(const double *x, const double *centre, double radius)
+static bool inside_ball(const double *x, const double *centre, double radius)
 {
     double r2 = 0.0;
     for (int d = 0; d < DIM; d++) r2 += (x[d] - centre[d]) * (x[d] - centre[d]);
@@ -264,7 +243,7 @@ static void test_disc_outer_ring(void **state)
     if (solver_init(&s, &cfg, err, sizeof err)) fail_msg("%s", err);
     double dr = s.dv.dr, radius = (DIM == 2 ? 10.0 : 6.0) * dr;
     double centre[3] = {0.5, 0.5, 0.5};
-    keep_only(&s, inside_ball, centre, radius);
+    keep_particles(&s, inside_ball, centre, radius);
     assert_int_equal(solver_prepare(&s, cfg.t_end), 0);
     const particles *p = &s.p;
     /* outer ring, by the lattice: a particle with one of its 2n axis neighbours outside the

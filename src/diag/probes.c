@@ -105,10 +105,10 @@ double probes_level(const probes *pr, const particles *p, double x)
         top = fmax(top, p->x[1][j]);
         bottom = fmin(bottom, p->x[1][j]);
     }
-    /* down the line from above every particle in steps of h_c / 8, then bisection */
+    /* down the line from above every particle in steps of h_c / 8, then bisection (no
+       particle near the line: top < bottom, no step) */
     double step = 0.125 * pr->colour.h, above = top + reach, level = 0.0;
-    for (double below = above - step; n > 0 && below > bottom - reach - step;
-         above = below, below -= step) {
+    for (double below = above - step; below > bottom - reach - step; above = below, below -= step) {
         if (colour_at(pr, near, n, below) < 0.5) continue;
         while (above - below > 1e-3 * pr->colour.h) {
             double mid = 0.5 * (above + below);
