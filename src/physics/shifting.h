@@ -45,8 +45,9 @@ static inline vec shifting_limit(vec du, double max_relative_speed, double u_max
  * (they hold V_i0 S_flat / S_i each, what eps_fs counts). Eq. (7) cannot thin such a layer: its
  * shift is tangential there and a gradient has no component along an evenly packed line. This
  * shift moves the particle inwards along its unit normal at SURFACE_UNPACK_RATE U_max per unit
- * of excess S_i / S_flat - 1, so that the layer hands its surplus to the liquid below, where the
- * geometric volume correction counts it (docs/volume.md, "The surface layer"). */
+ * of excess S_i / S_flat - 1, bounded like du* by Eq. (7)'s limit (a particle moving with its
+ * neighbours is not pushed through them), so that the layer hands its surplus to the liquid
+ * below, where the geometric volume correction counts it (docs/volume.md, "The surface layer"). */
 #define SURFACE_UNPACK_RATE 0.1
 
 static inline vec surface_unpacking_shift(double sum_ratio, double speed, vec unit_normal)

@@ -307,9 +307,11 @@ static vec shifting_velocity(const physics_params *pp, const particles *p, size_
     if (p->surface[i] == SURFACE_INTERIOR) return du;
     vec normal = vec_load(p->normal, i);
     du = shifting_tangential(du, normal); /* the surface's */
-    if (p->surface[i] == SURFACE_FREE && pp->unpack_speed > 0.0)
-        du = vec_add(du, surface_unpacking_shift(p->kernel_sum[i] * pp->surface_sum_scale,
-                                                 pp->unpack_speed, normal));
+    if (p->surface[i] == SURFACE_FREE && pp->unpack_speed > 0.0) {
+        vec unpack = surface_unpacking_shift(p->kernel_sum[i] * pp->surface_sum_scale,
+                                             pp->unpack_speed, normal);
+        du = vec_add(du, shifting_limit(unpack, sqrt(s->max_relative2), pp->shift_u_max));
+    }
     return du;
 }
 
