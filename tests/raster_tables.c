@@ -1,8 +1,8 @@
 /* raster_tables: the figures of docs/graphical-method.md, printed. The argument names the
  * tables by letters (b lattice block, d lattice disc/ball, s smooth disc/ball, r rotated block,
- * p perturbed block, c compressed block, g gaps between blobs, t timings) and the dimensions by
- * digits, e.g. `build/tests/raster_tables bdt23`. Not a test: it asserts nothing beyond what
- * test_raster does. */
+ * p perturbed block, c compressed block, g gaps between blobs, l thin sheets, t timings) and
+ * the dimensions by digits, e.g. `build/tests/raster_tables bdt23`. Not a test: it asserts nothing
+ * beyond what test_raster does. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -182,6 +182,43 @@ static void gap_table(const char *which)
     }
 }
 
+/* A floating sheet `rows` lattice rows thick (dr apart), its particles `spacing` dr apart
+ * along it (40 in 2D, 20 x 20 per layer in 3D): eps_GM against its particles' dr^n each. */
+static double sheet_eps(int dim, int rows, double spacing, const raster_params *rp)
+{
+    cloud c;
+    cloud_init(&c);
+    int along = dim == 3 ? 20 : 40;
+    double size[3] = {(along + 8) * dr, (rows + 8) * dr, (along + 8) * dr};
+    for (int k = 0; k < (dim == 3 ? along : 1); k++)
+        for (int j = 0; j < rows; j++)
+            for (int i = 0; i < along; i++)
+                cloud_add(&c, (4 + i * spacing) * dr, (4 + j) * dr,
+                          dim == 3 ? (4 + k * spacing) * dr : 0.0);
+    double e = eps_gm(dim, &c, size, rp);
+    cloud_free(&c);
+    return e;
+}
+
+static void sheet_table(const char *which)
+{
+    const int rows[4] = {1, 2, 3, 5};
+    const double spacings[3] = {1.0, 0.8, 0.7};
+    for (int dim = 2; dim <= 3; dim++) {
+        if (!strchr(which, '0' + dim)) continue;
+        raster_params rp = raster_params_default(dim);
+        printf("\nthin sheet, %dD, eps_GM (%%) by rows and spacing along it\n\n| rows |", dim);
+        for (int s = 0; s < 3; s++) printf(" %.1f dr |", spacings[s]);
+        printf("\n|---|---:|---:|---:|\n");
+        for (int r = 0; r < 4; r++) {
+            printf("| %d |", rows[r]);
+            for (int s = 0; s < 3; s++)
+                printf(" %+.2f |", 100.0 * sheet_eps(dim, rows[r], spacings[s], &rp));
+            printf("\n");
+        }
+    }
+}
+
 static void timing_table(const char *which)
 {
     for (int dim = 2; dim <= 3; dim++) {
@@ -223,13 +260,15 @@ static void print_tables(const char *what)
         table("compressed block, e = 1 %, eps_GM - ((1-e)^n - 1)", cfg_compressed, N20, 1,
               "N=", what);
     if (strchr(what, 'g')) gap_table(what);
+    if (strchr(what, 'l')) sheet_table(what);
     if (strchr(what, 't')) timing_table(what);
 }
 
 int main(int argc, char **argv)
 {
     if (argc != 2) {
-        fprintf(stderr, "usage: raster_tables TABLES (letters bdsrpcgt, digits 2 3: e.g. bdt23)\n");
+        fprintf(stderr,
+                "usage: raster_tables TABLES (letters bdsrpcglt, digits 2 3: e.g. bdt23)\n");
         return 2;
     }
     print_tables(argv[1]);
