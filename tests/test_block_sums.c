@@ -97,6 +97,11 @@ static void shifting_and_correction_follow_their_pair_functions(solver *s)
         vec du = gradient_beyond_floor(shifting_sum, fields_compression_gradient(p, i));
         du = shifting_limit(vec_scale(du, -scale), sqrt(max_relative2), pp->shift_u_max);
         if (p->surface[i] != SURFACE_INTERIOR) du = shifting_tangential(du, vec_load(p->normal, i));
+        if (p->surface[i] == SURFACE_FREE && pp->unpack_speed > 0.0)
+            du = vec_add(du, shifting_limit(
+                                 surface_unpacking_shift(p->kernel_sum[i] * pp->surface_sum_scale,
+                                                         pp->unpack_speed, vec_load(p->normal, i)),
+                                 sqrt(max_relative2), pp->shift_u_max));
         vec dv = volume_correction_velocity_from(pp, p, i, correction_sum);
         for (int d = 0; d < DIM; d++) {
             /* the shifting is held in single precision (frozen_real): rounded once more */
@@ -196,6 +201,33 @@ static void block_sums_follow_the_pair_functions(const char *scheme, bool mass)
     solver_free(&s);
 }
 
+/* model.surface_unpacking: the free surface's inward shift is bounded by Eq. (7)'s limit, so a
+ * liquid at rest (every u_ij = 0, the walls' images included) gets none, also where the
+ * surface is packed (S_i > S_flat, which the disordered block's top rows have); with random
+ * velocities the shift is the pair functions' with the unpacking added. */
+static void test_surface_unpacking(void **state)
+{
+    (void)state;
+    config cfg;
+    solver s;
+    block_with_scheme("delta-plus-ale\nsurface_unpacking = true", &cfg, &s);
+    assert_true(s.pp.unpack_speed > 0.0);
+    shifting_and_correction_follow_their_pair_functions(&s);
+    particles *p = &s.p;
+    for (size_t i = 0; i < p->n_total; i++)
+        for (int d = 0; d < DIM; d++) p->u[d][i] = 0.0;
+    neighbour_list rows = neighbours_near(&s.nl);
+    fields_shifting_and_correction(&s.pp, p, &rows, true, false, NULL, DIFFUSION_ROWS_NONE);
+    size_t packed = 0;
+    for (size_t i = 0; i < p->n_fluid; i++) {
+        if (p->surface[i] != SURFACE_FREE || p->lambda[i] < SHIFTING_LAMBDA_MIN) continue;
+        packed += p->kernel_sum[i] * s.pp.surface_sum_scale > 1.0;
+        for (int d = 0; d < DIM; d++) assert_true(p->shift[d][i] == 0.0);
+    }
+    assert_true(packed > 0);
+    solver_free(&s);
+}
+
 /* delta-plus-ALE at the start (eta = 0): the density diffusion */
 static void test_delta_plus_ale(void **state)
 {
@@ -215,6 +247,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_delta_plus_ale),
         cmocka_unit_test(test_delta_ale),
+        cmocka_unit_test(test_surface_unpacking),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
