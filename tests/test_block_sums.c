@@ -98,10 +98,9 @@ static void shifting_and_correction_follow_their_pair_functions(solver *s)
         du = shifting_limit(vec_scale(du, -scale), sqrt(max_relative2), pp->shift_u_max);
         if (p->surface[i] != SURFACE_INTERIOR) du = shifting_tangential(du, vec_load(p->normal, i));
         if (p->surface[i] == SURFACE_FREE && pp->unpack_speed > 0.0)
-            du = vec_add(du, shifting_limit(
-                                 surface_unpacking_shift(p->kernel_sum[i] * pp->surface_sum_scale,
-                                                         pp->unpack_speed, vec_load(p->normal, i)),
-                                 sqrt(max_relative2), pp->shift_u_max));
+            du = vec_add(du, surface_unpacking_shift(p->kernel_sum[i] * pp->surface_sum_scale,
+                                                     pp->unpack_speed, vec_load(p->normal, i),
+                                                     sqrt(max_relative2), pp->shift_u_max));
         vec dv = volume_correction_velocity_from(pp, p, i, correction_sum);
         for (int d = 0; d < DIM; d++) {
             /* the shifting is held in single precision (frozen_real): rounded once more */

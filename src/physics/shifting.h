@@ -50,10 +50,12 @@ static inline vec shifting_limit(vec du, double max_relative_speed, double u_max
  * below, where the geometric volume correction counts it (docs/volume.md, "The surface layer"). */
 #define SURFACE_UNPACK_RATE 0.1
 
-static inline vec surface_unpacking_shift(double sum_ratio, double speed, vec unit_normal)
+static inline vec surface_unpacking_shift(double sum_ratio, double speed, vec unit_normal,
+                                          double max_relative_speed, double u_max)
 {
     double excess = sum_ratio - 1.0;
-    return excess > 0.0 ? vec_scale(unit_normal, -speed * excess) : vec_zero();
+    if (excess <= 0.0) return vec_zero();
+    return shifting_limit(vec_scale(unit_normal, -speed * excess), max_relative_speed, u_max);
 }
 
 /* Near the free surface the normal component is removed, so that shifting does not move the

@@ -302,16 +302,16 @@ static vec shifting_velocity(const physics_params *pp, const particles *p, size_
                              const shift_sums *s)
 {
     vec sum = gradient_beyond_floor(s->shifting, fields_compression_gradient(p, i));
+    double max_relative_speed = sqrt(s->max_relative2);
     vec du = vec_scale(sum, -pp->k.h * pp->shift_u_max);
-    du = shifting_limit(du, sqrt(s->max_relative2), pp->shift_u_max);
+    du = shifting_limit(du, max_relative_speed, pp->shift_u_max);
     if (p->surface[i] == SURFACE_INTERIOR) return du;
     vec normal = vec_load(p->normal, i);
     du = shifting_tangential(du, normal); /* the surface's */
-    if (p->surface[i] == SURFACE_FREE && pp->unpack_speed > 0.0) {
-        vec unpack = surface_unpacking_shift(p->kernel_sum[i] * pp->surface_sum_scale,
-                                             pp->unpack_speed, normal);
-        du = vec_add(du, shifting_limit(unpack, sqrt(s->max_relative2), pp->shift_u_max));
-    }
+    if (p->surface[i] == SURFACE_FREE && pp->unpack_speed > 0.0)
+        du = vec_add(du, surface_unpacking_shift(p->kernel_sum[i] * pp->surface_sum_scale,
+                                                 pp->unpack_speed, normal, max_relative_speed,
+                                                 pp->shift_u_max));
     return du;
 }
 
