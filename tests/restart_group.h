@@ -26,20 +26,23 @@ extern char **environ;
 /* 1.2 s of sway with roll about the tank's centre (a rotating frame: the Coriolis, Euler and
  * centrifugal terms and the turning gravity must all restart exactly) at the first sloshing
  * period's neighbourhood: the adaptive control leaves its eta = 0 regime after 2 T_f of
- * history, so a restart must carry its history; U_max passes c0/10 (speed events); two periods end
- * (dissipation.csv). Checkpoints every 0.05 wall-clock seconds: several per run, some cut by kill
- * -9. */
-static const char case_text[] = "[case]\nname = slosh\nt_end = 1.2\n"
-                                "[tank]\nlength = 0.4\nheight = 0.3\n"
-                                "[liquid]\nheight = 0.1\n"
-                                "[motion]\ntype = sway+roll\namplitude = 0.03\nangle = 0.05\n"
-                                "period = 0.5\ncenter = 0.2 0.15\n"
-                                "[model]\nscheme = delta-plus-ale\neta_control = adaptive\n"
-                                "eta_threshold = 0.001\nedbc = with-eta0\n"
-                                "[numerics]\nresolution = 10\n"
-                                "[probes]\ngauges = 0.05, 0.35\npressure = 0.2 0.02\n"
-                                "[output]\ntimeseries_every = 0\nsnapshot_every = 0.1\n"
-                                "image_every = 0.4\ncheckpoint_every = 0.05\n";
+ * history, so a restart must carry its history; probes.csv has rows of its own interval and
+ * a filtered sensor, whose filter state a restart must carry; U_max passes c0/10 (speed events);
+ * two periods end (dissipation.csv). Checkpoints every 0.05 wall-clock seconds: several per run,
+ * some cut by kill -9. */
+static const char case_text[] =
+    "[case]\nname = slosh\nt_end = 1.2\n"
+    "[tank]\nlength = 0.4\nheight = 0.3\n"
+    "[liquid]\nheight = 0.1\n"
+    "[motion]\ntype = sway+roll\namplitude = 0.03\nangle = 0.05\n"
+    "period = 0.5\ncenter = 0.2 0.15\n"
+    "[model]\nscheme = delta-plus-ale\neta_control = adaptive\n"
+    "eta_threshold = 0.001\nedbc = with-eta0\n"
+    "[numerics]\nresolution = 10\n"
+    "[probes]\ngauges = 0.05, 0.35\npressure = 0.2 0.02; 0 0.05 d=0.01\n"
+    "every = 0.005\nfilter = butterworth\ncutoff = 40\n"
+    "[output]\ntimeseries_every = 0\nsnapshot_every = 0.1\n"
+    "image_every = 0.4\ncheckpoint_every = 0.05\n";
 
 /* timeseries.csv bytes of about 0.2 s of the run (~100 rows): "it has made progress" */
 enum { PROGRESS_BYTES = 30000 };

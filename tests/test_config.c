@@ -362,7 +362,7 @@ static void test_write_has_every_key(void **state)
     }
     /* docs/case-file.md plus numerics.density_bound, liquid.shape, case.experiment_dissipation,
        model.volume_correction and motion.angle, angle_phase, center */
-    assert_int_equal(n_keys, 48);
+    assert_int_equal(n_keys, 51);
     assert_non_null(strstr(text, "\nsound_speed      = auto ;"));
     assert_non_null(strstr(text, "\nh_over_dr        = 2 ;"));
     assert_non_null(strstr(text, "\nlength           = 1 ;"));

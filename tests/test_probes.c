@@ -13,7 +13,11 @@
  *   0.0047 dr (3D), the lattice's settling and the colour's own error on a lattice; bounds
  *   0.05 dr and 0.015 dr;
  * - pressure: measured +0.58 % (2D) and +0.38 % (3D) at the end, 0.004 % at t = 0; bounds
- *   1.5 % and 1.1 %. */
+ *   1.5 % and 1.1 %.
+ * probes.csv's rows follow probes.every, not timeseries.csv's: every step with 0 (one row per
+ * step, the step count of timeseries.csv), or at the exact multiples of its interval; with
+ * probes.filter each sensor's filtered signal follows as sensor_k, starting at rest at the
+ * first raw sample (the filter's own responses: test_sensor_filter). */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -73,6 +77,52 @@ static void check_still_tank(int dim, int resolution, double gauge_tol, double l
     table_free(&ts);
 }
 
+/* The still tank to 0.02 s with rows of timeseries.csv every 0.01 s and probes.csv every
+ * `every` s, a sensor on the side wall filtered at 50 Hz (first order). */
+static void run_probe_rows(const char *every, table *ts, table *pr)
+{
+    char text[1024], dir[64], path[128];
+    snprintf(text, sizeof text,
+             "[case]\nname = rows\nt_end = 0.02\n[tank]\nlength = 1.0\nheight = 1.0\n"
+             "[liquid]\nheight = %g\n[numerics]\nresolution = 10\nsound_speed = 20.0\n"
+             "[probes]\npressure = 0.0 0.1 d=0.08\nevery = %s\nfilter = first-order\n"
+             "cutoff = 50\n[output]\ntimeseries_every = 0.01\n",
+             DEPTH_H, every);
+    run_case_text(text, NULL, 0, dir, ts);
+    snprintf(path, sizeof path, "%s/probes.csv", dir);
+    assert_int_equal(table_read(pr, path), 0);
+    assert_int_equal(ts->n_rows, 3);
+    assert_int_equal(pr->n_columns, 3); /* t, pressure_1, sensor_1 */
+    /* the sensor starts at rest at its first sample, then lags the raw signal */
+    assert_true(pr->column[2][0] == pr->column[1][0]);
+}
+
+static void test_rows_every_step(void **state)
+{
+    (void)state;
+    table ts, pr;
+    run_probe_rows("0", &ts, &pr);
+    const double *steps = table_column(&ts, "step");
+    printf("%zu rows of probes.csv over %g steps\n", pr.n_rows, steps[ts.n_rows - 1]);
+    assert_int_equal(pr.n_rows, (size_t)steps[ts.n_rows - 1] + 1);
+    for (size_t row = 1; row < pr.n_rows; row++)
+        assert_true(pr.column[0][row] > pr.column[0][row - 1]);
+    table_free(&pr);
+    table_free(&ts);
+}
+
+static void test_rows_at_their_interval(void **state)
+{
+    (void)state;
+    table ts, pr;
+    run_probe_rows("0.004", &ts, &pr);
+    assert_int_equal(pr.n_rows, 6);
+    for (size_t row = 0; row < pr.n_rows; row++)
+        assert_close(pr.column[0][row], 0.004 * row, 1e-12);
+    table_free(&pr);
+    table_free(&ts);
+}
+
 static void test_still_tank_2d(void **state)
 {
     (void)state;
@@ -90,6 +140,8 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_still_tank_2d),
         cmocka_unit_test(test_still_tank_3d),
+        cmocka_unit_test(test_rows_every_step),
+        cmocka_unit_test(test_rows_at_their_interval),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -28,6 +28,10 @@
  *                            name changed when the surface energy left it, so that an older
  *                            checkpoint is refused)
  *   run_i64           i64    period, n_snapshots, n_images, speed_warned
+ *   probes_f64        f64    with probes only: the next row of probes.csv, then each pressure
+ *                            probe's filter state (y, rate, u, t, started; sensor_filter.h)
+ *                            (absent in checkpoints from before probes.every: the rows
+ *                            resume with timeseries.csv's)
  *   csv_sizes         i64    bytes of timeseries.csv, events.csv, dissipation.csv, probes.csv,
  *                            loads.csv (the first four in checkpoints from before loads.csv)
  *                            (-1: the run does not write it)
@@ -202,6 +206,10 @@ static int write_checkpoint(run *r, const particles *whole, const char *path, ch
     add(&l, "eta_i64", CHECKPOINT_I64, 5, eta_i64, ETA_I64);
     add(&l, "eta_samples", CHECKPOINT_F64, ETA_HISTORY, e->samples, NULL);
     add(&l, "run_i64", CHECKPOINT_I64, 4, run_i64, RUN_I64);
+    double probes_state[RUN_PROBES_STATE_MAX];
+    if (run_has_probes(r->cfg))
+        add(&l, "probes_f64", CHECKPOINT_F64, run_probes_state(r, probes_state), probes_state,
+            NULL);
     add(&l, "csv_sizes", CHECKPOINT_I64, RUN_N_CSV, csv_sizes, CSV_SIZES);
     add(&l, "snapshot_times", CHECKPOINT_F64, n_snap, r->snapshot_times, NULL);
     add(&l, "snapshot_counts", CHECKPOINT_I64, n_snap, counts, NULL);
@@ -378,6 +386,14 @@ static int load_outputs(run *r, const checkpoint_data *cd, char *err, size_t err
     r->n_images = (int)k[2];
     r->speed_warned = (int)k[3];
     for (int c = 0; c < RUN_N_CSV; c++) r->resume_sizes[c] = sizes[c];
+    if (run_has_probes(r->cfg)) {
+        double state[RUN_PROBES_STATE_MAX];
+        size_t n = run_probes_state(r, state); /* the count this case keeps */
+        const checkpoint_array *a =
+            checkpoint_find(cd, "probes_f64", CHECKPOINT_F64, n, NULL, err, err_len);
+        run_probes_resume(r, a ? a->data : NULL);
+        err[0] = '\0';
+    }
     return load_snapshot_index(r, cd, (int)k[1], err, err_len);
 }
 

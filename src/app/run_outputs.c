@@ -188,56 +188,6 @@ static double dissipated_energy(run *r, double energy)
  * that reconnections release without the discrete force having done the work (docs/energy.md). */
 static double surface_loss(run *r, double esurf) { return -(r->s.work_st + esurf); }
 
-/* On a split solver, the liquid and its walls' images as one process holds them, for the
- * probes, on the process that writes: the fluid gathered in the global order into q, its
- * images made again at this state as solver_prepare made them (a process's own images would
- * miss the other processes' and its halo's would count twice). Free q with
- * run_gathered_free. Returns 0, or -1 when out of memory. */
-static int rebuild_whole(run *r, particles *q)
-{
-    solver *s = &r->s;
-    run_gather(r, &s->p, RUN_GATHER_PROBES, q);
-    if (!team_writes(r->team)) return 0;
-    /* room for the images; the fields not gathered get their arrays here */
-    size_t n = q->n_fluid;
-    if (particles_reserve(q, n + n / 2 + 64) ||
-        tank_make_ghosts(&s->tank, q, 2.0 * s->dv.h + s->skin))
-        return -1;
-    tank_frame frame = solver_frame(s, s->t);
-    tank_refresh_ghosts(q, &frame, s->pp.rho0, s->pp.c0);
-    return 0;
-}
-
-/* One row of probes.csv: t, then the gauges, then the pressure probes (docs/case-file.md). */
-void run_write_probes_row(run *r)
-{
-    const config *cfg = r->cfg;
-    particles rebuilt;
-    const particles *p = &r->s.p;
-    int failed = 0;
-    if (r->split) {
-        failed = rebuild_whole(r, &rebuilt);
-        p = &rebuilt;
-    }
-    if (failed)
-        log_error("vcsph: probes: out of memory; probes.csv misses t = %.9g s", r->s.t);
-    else if (team_writes(r->team)) {
-        csv_file *c = &r->probes_csv;
-        csv_put(c, r->s.t);
-        for (int k = 0; k < cfg->n_gauges; k++)
-            csv_put(c, probes_gauge(&r->probes, p, cfg->gauges[k]));
-        for (int k = 0; k < cfg->n_pressure_probes; k++) {
-            const double *x = cfg->pressure_probes[k];
-            csv_put(c, x[3] > 0.0 ? probes_sensor(&r->probes, p, x, x[3], config_wall_axis(cfg, x))
-                                  : probes_pressure(&r->probes, p, x));
-        }
-        for (int k = 0; k < cfg->n_gauges; k++)
-            csv_put_number(c, probes_level(&r->probes, p, cfg->gauges[k]));
-        csv_end_row(c);
-    }
-    if (r->split) run_gathered_free(r, &rebuilt);
-}
-
 /* One row of loads.csv: t, the force and the moment about motion.center in the tank's axes,
  * both in the inertial axes (R F, R M), then the liquid's momentum and body force in the tank
  * frame (docs/loads.md). */
@@ -576,20 +526,11 @@ static int open_csv(run *r, int k, const char *header)
     return csv_open(run_csv(r, k), path, header);
 }
 
-/* probes.csv with the header t,gauge_1..,pressure_1..,level_1.. (docs/outputs.md) */
+/* probes.csv with its header (run_probes.c) */
 static int open_probes(run *r)
 {
-    const config *cfg = r->cfg;
-    char header[32 + 24 * 3 * CONFIG_PROBES_MAX];
-    int len = snprintf(header, sizeof header, "t");
-    for (int k = 0; k < cfg->n_gauges; k++)
-        len += snprintf(header + len, sizeof header - (size_t)len, ",gauge_%d", k + 1);
-    for (int k = 0; k < cfg->n_pressure_probes; k++)
-        len += snprintf(header + len, sizeof header - (size_t)len, ",pressure_%d", k + 1);
-    for (int k = 0; k < cfg->n_gauges; k++)
-        len += snprintf(header + len, sizeof header - (size_t)len, ",level_%d", k + 1);
-    probes_init(&r->probes, r->s.dv.h, r->s.dv.dr, r->s.dv.cell_volume,
-                cfg->dim == 3 ? cfg->tank_width : 1.0);
+    char header[RUN_PROBES_HEADER_MAX];
+    run_probes_start(r, header, sizeof header);
     return open_csv(r, RUN_CSV_PROBES, header);
 }
 

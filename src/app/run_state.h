@@ -9,6 +9,7 @@
 #include "app/threads.h"
 #include "app/simulation.h"
 #include "diag/probes.h"
+#include "diag/sensor_filter.h"
 #include "io/checkpoint.h"
 #include "io/csv.h"
 #include "scheme/solver.h"
@@ -46,6 +47,9 @@ typedef struct {
     double mass0, v0;
     double graphical_volume0; /* the graphical method's volume of the initial lattice */
     double next_series, next_snapshot, next_image;
+    double next_probes;                      /* probes.csv's next row (probes.every) */
+    sensor_filter sensor_filter;             /* the pressure sensors' bandwidth (probes.filter) */
+    sensor_state sensors[CONFIG_PROBES_MAX]; /* each pressure probe's filter */
     int n_images;
     /* snapshot index for the XDMF file */
     int n_snapshots, cap_snapshots;
@@ -99,6 +103,9 @@ static inline double run_period_end(const run *r) { return (double)r->period * r
 #define run_open_outputs          DIM_NAME(run_open_outputs)
 #define run_write_series_row      DIM_NAME(run_write_series_row)
 #define run_write_probes_row      DIM_NAME(run_write_probes_row)
+#define run_probes_start          DIM_NAME(run_probes_start)
+#define run_probes_state          DIM_NAME(run_probes_state)
+#define run_probes_resume         DIM_NAME(run_probes_resume)
 #define run_write_loads_row       DIM_NAME(run_write_loads_row)
 #define run_write_dissipation_row DIM_NAME(run_write_dissipation_row)
 #define run_write_snapshot        DIM_NAME(run_write_snapshot)
@@ -140,8 +147,23 @@ int run_open_outputs(run *r);
 /* One row of timeseries.csv (docs/outputs.md); with_geometry 0 (a breakdown row): the volume
  * columns empty. Raises the U_max > c0/10 event once per crossing. */
 void run_write_series_row(run *r, int with_geometry);
-/* One row of probes.csv. */
+
+/* ---- run_probes.c: probes.csv ---- */
+
+/* room for probes.csv's header: t and four columns per probe at most */
+#define RUN_PROBES_HEADER_MAX (32 + 24 * 4 * CONFIG_PROBES_MAX)
+/* probes.csv's header into `header` (docs/outputs.md: t, gauge_k, pressure_k, level_k, and
+ * with probes.filter sensor_k), and the probes and the sensors' filter set up for the run. */
+void run_probes_start(run *r, char *header, size_t size);
+/* One row of probes.csv at the current state, and each sensor's filter fed with it. */
 void run_write_probes_row(run *r);
+/* What a checkpoint keeps of probes.csv's writer: the next row's time and each pressure
+ * probe's filter state; returns how many numbers it wrote into out. */
+#define RUN_PROBES_STATE_MAX (1 + SENSOR_STATE_VALUES * CONFIG_PROBES_MAX)
+size_t run_probes_state(const run *r, double out[RUN_PROBES_STATE_MAX]);
+/* Takes that state back (in: run_probes_state's numbers), or with in = NULL, for a checkpoint
+ * from before it, rows due with timeseries.csv's and the filters unstarted. */
+void run_probes_resume(run *r, const double *in);
 /* One row of loads.csv at the current state (docs/loads.md); needs this step's neighbours. */
 void run_write_loads_row(run *r);
 /* One row of dissipation.csv for the period that ends now, which it closes. */

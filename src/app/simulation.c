@@ -74,7 +74,7 @@ static int output_due(double t, double every, double *next, int last)
 
 /* The time the next step may not pass, on which it lands when it would pass it: t_end; the
  * first period end after t, so that each period's dissipation is measured at its exact ends;
- * the next row of timeseries.csv and probes.csv and the next snapshot, so that signals are
+ * the next row of timeseries.csv and of probes.csv and the next snapshot, so that signals are
  * sampled at exact multiples of their interval (an FFT needs them evenly spaced). Every time
  * here is a multiple of a case's interval, the same whether the run started at 0 or at a
  * checkpoint, and a run extended past t_end lands on t_end as one that ran longer from the
@@ -84,8 +84,9 @@ static double step_stop(const run *r)
     const config *cfg = r->cfg;
     double t = r->s.t, stop = cfg->t_end;
     if (run_has_periods(r)) stop = fmin(stop, next_multiple(t, cfg->period));
-    const double every[] = {cfg->timeseries_every, cfg->snapshot_every};
-    for (int k = 0; k < 2; k++)
+    const double every[] = {cfg->timeseries_every, cfg->snapshot_every,
+                            run_has_probes(cfg) ? cfg->probes_every : 0.0};
+    for (int k = 0; k < 3; k++)
         if (every[k] > 0.0) stop = fmin(stop, next_multiple(t, every[k]));
     return stop;
 }
@@ -98,8 +99,9 @@ static int outputs_due(run *r, int last)
     if (output_due(t, cfg->timeseries_every, &r->next_series, last)) {
         run_write_series_row(r, 1);
         run_write_loads_row(r);
-        if (run_has_probes(cfg)) run_write_probes_row(r);
     }
+    if (run_has_probes(cfg) && output_due(t, cfg->probes_every, &r->next_probes, last))
+        run_write_probes_row(r);
     if (run_has_periods(r) && t >= run_period_end(r) * (1.0 - 1e-12)) run_write_dissipation_row(r);
     if (cfg->image_every > 0 && output_due(t, cfg->image_every, &r->next_image, last) &&
         run_write_image(r))

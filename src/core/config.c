@@ -75,6 +75,7 @@ static const char *const volume_correction_words[] = {"none", "geometric", "auto
 static const char *const eta_control_words[] = {"threshold", "adaptive", NULL};
 static const char *const wall_words[] = {"no-slip", "free-slip", NULL};
 static const char *const liquid_shape_words[] = {"box", "ellipse", NULL};
+static const char *const probes_filter_words[] = {"raw", "first-order", "butterworth", NULL};
 
 static const char *const sections[] = {"case",  "tank",     "liquid", "fluid", "motion",
                                        "model", "numerics", "probes", "output"};
@@ -387,13 +388,24 @@ static const ini_key keys[] = {
              "D > 0, on one wall with the face inside it",
              "points where the SPH pressure is sampled, or sensors of diameter D on a wall that "
              "read its mean over their face, into probes.csv"),
+    KEY("probes", "every", INI_REAL, INI_DERIVED, "output.timeseries_every", probes_every,
+        NON_NEGATIVE, NULL, "a time >= 0 (s; 0 = every step)",
+        "simulated time between rows of probes.csv: the sensors' sampling interval"),
+    KEY("probes", "filter", INI_WORD, 0, "raw", probes_filter, ANY, probes_filter_words,
+        "one of raw | first-order | butterworth",
+        "the pressure sensors' bandwidth: a low-pass of probes.cutoff on their samples, "
+        "written beside the raw signal as sensor_k"),
+    KEY("probes", "cutoff", INI_REAL, 0, "0.0", probes_cutoff, NON_NEGATIVE, NULL,
+        "a frequency > 0 (Hz) below half the sampling rate 1 / probes.every; needed by "
+        "probes.filter",
+        "the filter's cut-off (-3 dB) frequency"),
 
     KEY("output", "dir", INI_PATH, INI_NOT_EMPTY, "out/<name>", output_dir, ANY, NULL,
         "a directory path ('<name>' stands for case.name)",
         "output directory of the run (-o overrides it)"),
     KEY("output", "timeseries_every", INI_REAL, 0, "0.0", timeseries_every, NON_NEGATIVE, NULL,
         "a time >= 0 (s; 0 = every step)",
-        "simulated time between rows of timeseries.csv and probes.csv"),
+        "simulated time between rows of timeseries.csv and loads.csv (probes.csv: probes.every)"),
     KEY("output", "snapshot_every", INI_REAL, 0, "0.0", snapshot_every, NON_NEGATIVE, NULL,
         "a time >= 0 (s; 0 = none)", "simulated time between HDF5 snapshots"),
     KEY("output", "image_every", INI_REAL, 0, "0.0", image_every, NON_NEGATIVE, NULL,
@@ -467,6 +479,8 @@ static void resolve_defaults(ini_session *ctx)
     if (isnan(center[2])) center[2] = cfg->dim == 3 ? 0.5 * cfg->tank_width : 0.0;
     if (!ini_given(ctx, ini_key_of(ctx, "numerics", "h_over_dr")))
         cfg->h_over_dr = cfg->dim == 3 ? 1.5 : 2.0;
+    if (!ini_given(ctx, ini_key_of(ctx, "probes", "every")))
+        cfg->probes_every = cfg->timeseries_every;
     /* the scheme-dependent defaults (docs/volume-correction.md, "Defaults") */
     bool plus_ale = cfg->scheme == SCHEME_DELTA_PLUS_ALE;
     if (cfg->edbc == EDBC_AUTO) cfg->edbc = plus_ale ? EDBC_WITH_ETA0 : EDBC_OFF;
@@ -630,6 +644,28 @@ static void check_probes(ini_session *ctx)
     }
 }
 
+/* A filter needs sensors, a cut-off, and samples at least twice per period of its cut-off
+ * (Nyquist): a low-pass cannot model a bandwidth its sampling aliases. */
+static void check_probes_filter(ini_session *ctx)
+{
+    const config *cfg = ini_target(ctx);
+    if (cfg->probes_filter == PROBES_RAW) return;
+    const ini_key *filter = ini_key_of(ctx, "probes", "filter"),
+                  *cutoff = ini_key_of(ctx, "probes", "cutoff");
+    char why[256];
+    if (cfg->n_pressure_probes == 0)
+        ini_fail_key(ctx, filter, "filters the pressure sensors: set probes.pressure");
+    else if (!(cfg->probes_cutoff > 0.0))
+        ini_fail_key(ctx, cutoff, "probes.filter needs its cut-off frequency (Hz) > 0");
+    else if (cfg->probes_every > 0.0 && cfg->probes_cutoff >= 0.5 / cfg->probes_every) {
+        snprintf(why, sizeof why,
+                 "%g Hz is not below half the sampling rate 1 / probes.every = %g Hz; sample "
+                 "faster (probes.every < %g s, 0 = every step) or lower the cut-off",
+                 cfg->probes_cutoff, 1.0 / cfg->probes_every, 0.5 / cfg->probes_cutoff);
+        ini_fail_key(ctx, cutoff, why);
+    }
+}
+
 int config_wall_axis(const config *cfg, const double x[3])
 {
     const double size[3] = {cfg->tank_length, cfg->tank_height, cfg->tank_width};
@@ -659,8 +695,9 @@ static void check_whole_case(ini_session *ctx)
 
 /* In this order, after the required keys: defaults that depend on other keys need those keys
  * first, and the whole case's check needs every key. */
-static void (*const checks[])(ini_session *ctx) = {resolve_defaults, check_liquid, check_motion,
-                                                   check_probes, check_whole_case};
+static void (*const checks[])(ini_session *ctx) = {resolve_defaults,    check_liquid,
+                                                   check_motion,        check_probes,
+                                                   check_probes_filter, check_whole_case};
 
 static const ini_schema case_schema = {sections, N_SECTIONS, keys,
                                        N_KEYS,   checks,     sizeof checks / sizeof checks[0]};

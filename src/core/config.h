@@ -45,6 +45,8 @@ typedef enum { ETA_CONTROL_THRESHOLD, ETA_CONTROL_ADAPTIVE } eta_control_kind;
 typedef enum { WALL_NO_SLIP, WALL_FREE_SLIP } wall_kind;
 /* The liquid at t = 0: the whole box, or the ellipse (ellipsoid) inscribed in it. */
 typedef enum { LIQUID_BOX, LIQUID_ELLIPSE } liquid_shape_kind;
+/* the bandwidth of the pressure sensors (probes.filter; diag/sensor_filter.h) */
+typedef enum { PROBES_RAW, PROBES_FIRST_ORDER, PROBES_BUTTERWORTH } probes_filter_kind;
 
 typedef struct {
     /* [case] */
@@ -93,6 +95,9 @@ typedef struct {
     /* x, y, z and the sensor's diameter (0: a point; > 0: a transducer flush with a wall,
        which reads the mean pressure over its face) */
     double pressure_probes[CONFIG_PROBES_MAX][4];
+    double probes_every; /* s between rows of probes.csv, 0 = every step */
+    probes_filter_kind probes_filter;
+    double probes_cutoff; /* Hz, the filter's -3 dB frequency */
     /* [output] */
     char output_dir[CONFIG_PATH_MAX];
     double timeseries_every, snapshot_every, image_every, checkpoint_every;

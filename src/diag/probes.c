@@ -124,10 +124,15 @@ double probes_level(const probes *pr, const particles *p, double x)
     return level;
 }
 
-double probes_pressure(const probes *pr, const particles *p, const double x[3])
+/* The Shepard interpolation of the pressure at x over the particles `near` (all when NULL,
+ * n_near ignored). */
+static double shepard_pressure(const probes *pr, const particles *p, const double x[3],
+                               const size_t *near, size_t n_near)
 {
     double weighted = 0.0, shepard = 0.0;
-    for (size_t j = 0; j < p->n_total; j++) {
+    size_t n = near ? n_near : p->n_total;
+    for (size_t m = 0; m < n; m++) {
+        size_t j = near ? near[m] : m;
         double r2 = 0.0;
         for (int d = 0; d < DIM; d++) {
             double dx = p->x[d][j] - x[d];
@@ -139,6 +144,32 @@ double probes_pressure(const probes *pr, const particles *p, const double x[3])
         shepard += wv;
     }
     return shepard > 0.0 ? weighted / shepard : 0.0;
+}
+
+double probes_pressure(const probes *pr, const particles *p, const double x[3])
+{
+    return shepard_pressure(pr, p, x, NULL, 0);
+}
+
+/* The particles within 2h of some point of a face of the given radius centred at x: those
+ * within radius + 2h of x. NULL when out of memory (the caller then reads them all). */
+static size_t *particles_near_face(const probes *pr, const particles *p, const double x[3],
+                                   double radius, size_t *n_near)
+{
+    size_t *near = malloc((p->n_total ? p->n_total : 1) * sizeof *near);
+    if (!near) return NULL;
+    double reach = radius + 2.0 * pr->k.h, reach2 = reach * reach;
+    size_t n = 0;
+    for (size_t j = 0; j < p->n_total; j++) {
+        double r2 = 0.0;
+        for (int d = 0; d < DIM; d++) {
+            double dx = p->x[d][j] - x[d];
+            r2 += dx * dx;
+        }
+        if (r2 < reach2) near[n++] = j;
+    }
+    *n_near = n;
+    return near;
 }
 
 #if DIM == 2
@@ -157,12 +188,13 @@ double probes_sensor(const probes *pr, const particles *p, const double x[3], do
                      int wall_axis)
 {
     double radius = 0.5 * diameter, sum = 0.0, point[3] = {x[0], x[1], x[2]};
+    size_t n_near = 0, *near = particles_near_face(pr, p, x, radius, &n_near);
 #if DIM == 2
     int along = wall_axis == 0 ? 1 : 0; /* the wall's direction in the plane */
     for (int k = 0; k < 8; k++) {
         double s = (k % 2 ? -1.0 : 1.0) * legendre8_node[k / 2];
         point[along] = x[along] + radius * s;
-        sum += 0.5 * legendre8_weight[k / 2] * probes_pressure(pr, p, point);
+        sum += 0.5 * legendre8_weight[k / 2] * shepard_pressure(pr, p, point, near, n_near);
     }
 #else
     int u = (wall_axis + 1) % 3, v = (wall_axis + 2) % 3; /* the wall's plane */
@@ -175,9 +207,10 @@ double probes_sensor(const probes *pr, const particles *p, const double x[3], do
             double theta = 2.0 * M_PI * (a + 0.5) / 8.0;
             point[u] = x[u] + r * cos(theta);
             point[v] = x[v] + r * sin(theta);
-            sum += weight * probes_pressure(pr, p, point);
+            sum += weight * shepard_pressure(pr, p, point, near, n_near);
         }
     }
 #endif
+    free(near);
     return sum;
 }
