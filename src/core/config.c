@@ -1,11 +1,11 @@
-/* config: the case file's vocabulary (docs/case-file.md): its sections and keys, the lists of
- * probes, the defaults that depend on other keys and the checks of the whole case. The INI
- * engine that reads it, checks each value and writes it back is io/ini_schema.c. */
+/* config: the case file's vocabulary (docs/case-file.md): its sections and keys, the defaults
+ * that depend on other keys and the checks of the whole case (the list-valued keys' readers:
+ * core/config_lists.c). The INI engine that reads it, checks each value and writes it back is
+ * io/ini_schema.c. */
 #include "core/config.h"
-#include "core/decimal.h"
+#include "core/config_lists.h"
 #include "io/ini_schema.h"
 
-#include <ctype.h>
 #include <float.h>
 #include <limits.h>
 #include <math.h>
@@ -24,6 +24,7 @@ _Static_assert(sizeof(volume_correction_kind) == sizeof(int), "enum size");
 _Static_assert(sizeof(eta_control_kind) == sizeof(int), "enum size");
 _Static_assert(sizeof(wall_kind) == sizeof(int), "enum size");
 _Static_assert(sizeof(liquid_shape_kind) == sizeof(int), "enum size");
+_Static_assert(sizeof(probes_filter_kind) == sizeof(int), "enum size");
 
 /* ---- the schema --------------------------------------------------------------------------- */
 
@@ -80,192 +81,6 @@ static const char *const probes_filter_words[] = {"raw", "first-order", "butterw
 static const char *const sections[] = {"case",  "tank",     "liquid", "fluid", "motion",
                                        "model", "numerics", "probes", "output"};
 #define N_SECTIONS (sizeof sections / sizeof sections[0])
-
-/* What reading a case keeps beside the config: how many coordinates the pressure points were
- * given with, checked against case.dim once dim is final. */
-typedef struct {
-    int point_coords;        /* 0 if no point */
-    config_case_check check; /* config_load_checked's, NULL for none */
-    void *check_user;
-} case_reading;
-
-/* Reads one number of a list; `seps` are the characters that may follow it. */
-static bool list_number(const ini_key *k, const char **p, const char *seps, double *v, char *why,
-                        size_t n)
-{
-    char *end;
-    *v = decimal_strtod(*p, &end);
-    if (end == *p || !isfinite(*v) ||
-        (*end && !isspace((unsigned char)*end) && !strchr(seps, *end))) {
-        char stop[16];
-        snprintf(stop, sizeof stop, " \t%s", seps);
-        int len = (int)strcspn(*p, stop);
-        if (len == 0)
-            snprintf(why, n, "unexpected '%c'; must be %s", **p, k->allowed);
-        else
-            snprintf(why, n, "'%.*s' is not a finite decimal number; must be %s",
-                     len > 40 ? 40 : len, *p, k->allowed);
-        return false;
-    }
-    *p = ini_skip_space(end);
-    return true;
-}
-
-static bool set_gauges(ini_session *ctx, const ini_key *k, const char *s, char *why, size_t n)
-{
-    double x[CONFIG_PROBES_MAX];
-    int count = 0;
-    for (const char *p = ini_skip_space(s); *p;) {
-        if (count == CONFIG_PROBES_MAX) {
-            snprintf(why, n, "more than %d gauges", CONFIG_PROBES_MAX);
-            return false;
-        }
-        if (!list_number(k, &p, ",", &x[count++], why, n)) return false;
-        if (*p == ',') {
-            p = ini_skip_space(p + 1);
-            if (!*p) {
-                snprintf(why, n, "a ',' must be followed by a position; must be %s", k->allowed);
-                return false;
-            }
-        }
-    }
-    config *cfg = ini_target(ctx);
-    memset(cfg->gauges, 0, sizeof cfg->gauges);
-    memcpy(cfg->gauges, x, (size_t)count * sizeof x[0]);
-    cfg->n_gauges = count;
-    return true;
-}
-
-/* Points "x y[ z][ d=D]; ...": 2 or 3 coordinates each, the same number for all, and an
- * optional diameter D >= 0 of a transducer (where it sits is checked with the tank); whether
- * the number of coordinates matches case.dim is checked once dim is final. */
-static bool set_points(ini_session *ctx, const ini_key *k, const char *s, char *why, size_t n)
-{
-    double pts[CONFIG_PROBES_MAX][4] = {{0}};
-    int count = 0, coords = 0;
-    const char *p = ini_skip_space(s);
-    while (*p) {
-        if (count == CONFIG_PROBES_MAX) {
-            snprintf(why, n, "more than %d pressure probes", CONFIG_PROBES_MAX);
-            return false;
-        }
-        int c = 0;
-        while (*p && *p != ';') {
-            if (strncmp(p, "d=", 2) == 0 && c >= 2) {
-                p += 2;
-                if (!list_number(k, &p, ";", &pts[count][3], why, n)) return false;
-                if (pts[count][3] < 0.0 || (*p && *p != ';')) {
-                    snprintf(why, n,
-                             "point %d: the diameter must be a length >= 0 (m) after "
-                             "the coordinates; must be %s",
-                             count + 1, k->allowed);
-                    return false;
-                }
-                break;
-            }
-            if (c == 3) {
-                snprintf(why, n, "point %d has more than 3 coordinates; must be %s", count + 1,
-                         k->allowed);
-                return false;
-            }
-            if (!list_number(k, &p, ";", &pts[count][c++], why, n)) return false;
-        }
-        if (c < 2 || (coords && c != coords)) {
-            snprintf(why, n, "point %d has %d coordinates%s; must be %s", count + 1, c,
-                     coords && c != coords ? ", unlike point 1" : "", k->allowed);
-            return false;
-        }
-        coords = c;
-        count++;
-        if (*p == ';') {
-            p = ini_skip_space(p + 1);
-            if (!*p) {
-                snprintf(why, n, "a ';' must be followed by a point; must be %s", k->allowed);
-                return false;
-            }
-        }
-    }
-    config *cfg = ini_target(ctx);
-    memcpy(cfg->pressure_probes, pts, sizeof pts);
-    cfg->n_pressure_probes = count;
-    ((case_reading *)ini_user(ctx))->point_coords = coords;
-    return true;
-}
-
-/* Appends prefix and the number v to buf (size bytes, `used` of them taken). False when the
- * text cannot be formatted; a full buffer leaves *used >= size, which ends the callers' loops. */
-static bool append_number(char *buf, size_t size, size_t *used, const char *prefix, double v)
-{
-    char num[32];
-    ini_format_double(v, num, sizeof num);
-    int w = snprintf(buf + *used, size - *used, "%s%s", prefix, num);
-    if (w < 0) return false;
-    *used += (size_t)w;
-    return true;
-}
-
-/* n numbers separated by `sep` into buf. */
-static void format_numbers(const double *v, int n, const char *sep, char *buf, size_t size)
-{
-    size_t used = 0;
-    buf[0] = '\0';
-    for (int i = 0; i < n && used < size; i++)
-        if (!append_number(buf, size, &used, i ? sep : "", v[i])) return;
-}
-
-static void format_gauges(const void *target, const ini_key *k, char *buf, size_t size)
-{
-    (void)k;
-    const config *cfg = target;
-    format_numbers(cfg->gauges, cfg->n_gauges, ", ", buf, size);
-}
-
-/* No space before ';': in INI " ;" starts a comment. */
-static void format_point_list(const config *cfg, int coords, char *buf, size_t size)
-{
-    size_t used = 0;
-    buf[0] = '\0';
-    for (int i = 0; i < cfg->n_pressure_probes && used < size; i++) {
-        const double *x = cfg->pressure_probes[i];
-        for (int d = 0; d < coords && d < 3 && used < size; d++)
-            if (!append_number(buf, size, &used, d ? " " : i ? "; " : "", x[d])) return;
-        if (x[3] > 0.0 && used < size && !append_number(buf, size, &used, " d=", x[3])) return;
-    }
-}
-
-static void format_points(const void *target, const ini_key *k, char *buf, size_t size)
-{
-    (void)k;
-    const config *cfg = target;
-    format_point_list(cfg, cfg->dim, buf, size);
-}
-
-/* "x y[ z]": the rotation axis's point; z is filled in by resolve_defaults when absent. */
-static bool set_center(ini_session *ctx, const ini_key *k, const char *s, char *why, size_t n)
-{
-    double x[3] = {0.0, 0.0, NAN};
-    int c = 0;
-    for (const char *p = ini_skip_space(s); *p; c++) {
-        if (c == 3) {
-            snprintf(why, n, "more than 3 coordinates; must be %s", k->allowed);
-            return false;
-        }
-        if (!list_number(k, &p, "", &x[c], why, n)) return false;
-    }
-    if (c < 2) {
-        snprintf(why, n, "%d coordinate%s; must be %s", c, c == 1 ? "" : "s", k->allowed);
-        return false;
-    }
-    memcpy(((config *)ini_target(ctx))->motion_center, x, sizeof x);
-    return true;
-}
-
-static void format_center(const void *target, const ini_key *k, char *buf, size_t size)
-{
-    (void)k;
-    const config *cfg = target;
-    format_numbers(cfg->motion_center, cfg->dim, " ", buf, size);
-}
 
 /* The case file, section by section (docs/case-file.md; config_write follows this table). */
 static const ini_key keys[] = {
@@ -329,7 +144,8 @@ static const ini_key keys[] = {
     KEY("motion", "angle_phase", INI_REAL, 0, "0.0", angle_phase, ANY, NULL, "an angle (rad)",
         "phase of the rotation beyond phi: the angle's phase is phi + angle_phase"),
     LIST_KEY_FLAGS("motion", "center", INI_DERIVED, "<tank bottom centre>", motion_center,
-                   set_center, format_center, "a point 'x y[ z]' (m) in tank coordinates",
+                   config_set_center, config_format_center,
+                   "a point 'x y[ z]' (m) in tank coordinates",
                    "point of the rotation axis (roll, pitch, yaw, table angles); in 3D a "
                    "missing z is the tank's mid-width"),
     KEY("motion", "duration", INI_REAL, 0, "0.0", duration, NON_NEGATIVE, NULL,
@@ -380,10 +196,10 @@ static const ini_key keys[] = {
         "a fraction in (0, 1): a density outside rho0 (1 +- bound) is a breakdown",
         "how far a density may stray from rho0 before the run stops (exit 3)"),
 
-    LIST_KEY("probes", "gauges", "", gauges, set_gauges, format_gauges,
+    LIST_KEY("probes", "gauges", "", gauges, config_set_gauges, config_format_gauges,
              "x positions (m) inside the tank, separated by commas or spaces",
              "x of wave gauges: liquid depth on a vertical line, into probes.csv"),
-    LIST_KEY("probes", "pressure", "", pressure_probes, set_points, format_points,
+    LIST_KEY("probes", "pressure", "", pressure_probes, config_set_points, config_format_points,
              "points 'x y[ z][ d=D]' (m) inside the tank, separated by ';'; with a diameter "
              "D > 0, on one wall with the face inside it",
              "points where the SPH pressure is sampled, or sensors of diameter D on a wall that "
@@ -605,7 +421,7 @@ static void check_probes(ini_session *ctx)
     if (coords && coords != cfg->dim) {
         /* Shown with the coordinates as given: formatting for dim would drop or invent some. */
         char as_given[INI_LINE_MAX];
-        format_point_list(cfg, coords, as_given, sizeof as_given);
+        config_format_point_list(cfg, coords, as_given, sizeof as_given);
         snprintf(why, sizeof why, "points have %d coordinates but case.dim = %d; write %s", coords,
                  cfg->dim, cfg->dim == 3 ? "'x y z'" : "'x y'");
         ini_fail_value(ctx, pressure, ini_key_line(ctx, pressure), as_given, why);
@@ -664,20 +480,6 @@ static void check_probes_filter(ini_session *ctx)
                  cfg->probes_cutoff, 1.0 / cfg->probes_every, 0.5 / cfg->probes_cutoff);
         ini_fail_key(ctx, cutoff, why);
     }
-}
-
-int config_wall_axis(const config *cfg, const double x[3])
-{
-    const double size[3] = {cfg->tank_length, cfg->tank_height, cfg->tank_width};
-    int axis = -1;
-    for (int d = 0; d < cfg->dim; d++) {
-        /* on the wall to round-off of the tank's size, as a value typed in a case file is */
-        double tolerance = 1e-12 * size[d];
-        if (fabs(x[d]) > tolerance && fabs(x[d] - size[d]) > tolerance) continue;
-        if (axis != -1) return -2;
-        axis = d;
-    }
-    return axis;
 }
 
 /* The caller's check of the whole case, last, blaming the key it names where it was set. */
