@@ -32,6 +32,18 @@ static bool list_number(const ini_key *k, const char **p, const char *seps, doub
     return true;
 }
 
+/* Past a list's separator `sep` at *p and the spaces after it, which must be followed by
+ * another item (`what`); false with the reason in why at the list's end. */
+static bool skip_separator(const ini_key *k, const char **p, char sep, const char *what, char *why,
+                           size_t n)
+{
+    if (**p != sep) return true;
+    *p = ini_skip_space(*p + 1);
+    if (**p) return true;
+    snprintf(why, n, "a '%c' must be followed by %s; must be %s", sep, what, k->allowed);
+    return false;
+}
+
 bool config_set_gauges(ini_session *ctx, const ini_key *k, const char *s, char *why, size_t n)
 {
     double x[CONFIG_PROBES_MAX];
@@ -42,13 +54,7 @@ bool config_set_gauges(ini_session *ctx, const ini_key *k, const char *s, char *
             return false;
         }
         if (!list_number(k, &p, ",", &x[count++], why, n)) return false;
-        if (*p == ',') {
-            p = ini_skip_space(p + 1);
-            if (!*p) {
-                snprintf(why, n, "a ',' must be followed by a position; must be %s", k->allowed);
-                return false;
-            }
-        }
+        if (!skip_separator(k, &p, ',', "a position", why, n)) return false;
     }
     config *cfg = ini_target(ctx);
     memset(cfg->gauges, 0, sizeof cfg->gauges);
@@ -98,13 +104,7 @@ bool config_set_points(ini_session *ctx, const ini_key *k, const char *s, char *
         }
         coords = c;
         count++;
-        if (*p == ';') {
-            p = ini_skip_space(p + 1);
-            if (!*p) {
-                snprintf(why, n, "a ';' must be followed by a point; must be %s", k->allowed);
-                return false;
-            }
-        }
+        if (!skip_separator(k, &p, ';', "a point", why, n)) return false;
     }
     config *cfg = ini_target(ctx);
     memcpy(cfg->pressure_probes, pts, sizeof pts);
