@@ -21,8 +21,9 @@
      one-thread time / (THREAD_EFFICIENCY p) + STEP_SYNC_US, or the one-thread time if less;
    - outputs: a row of timeseries.csv (with loads.csv and probes.csv) ROW_US + ROW_US_PARTICLE n,
      a snapshot SNAPSHOT_US + SNAPSHOT_US_PARTICLE n, a particle image IMAGE_US; and every
-     multiple of output.timeseries_every, output.snapshot_every and the motion's period on
-     which a step lands splits a step in two, half a step more on average each;
+     multiple of output.timeseries_every, output.snapshot_every, probes.every and the motion's
+     period on which a step lands splits a step in two, half a step more on average each, and
+     an interval shorter than the step makes a step of each;
    - the start (lattice, first neighbour lists, files) START_US + START_US_PARTICLE n.
    The machine's speed varied by some 20 % from one minute to the next: the one-thread figures
    are those fits scaled by 0.9, which centres tools/check-estimates' whole runs on 1. */
@@ -57,13 +58,16 @@ static void estimate_seconds(const config *cfg, const derived *dv, run_estimate 
     double step_1 = n * e->us_per_particle_step;
     double step_p = step_1 / (THREAD_EFFICIENCY * e->threads) + STEP_SYNC_US;
     e->speedup = e->threads > 1 && step_p < step_1 ? step_1 / step_p : 1.0;
-    /* the finest interval a step lands on sets the extra steps */
+    /* the finest interval a step lands on sets the extra steps; one finer than the step cuts
+       every step to it */
     double finest = cfg->t_end;
     const double landing[] = {cfg->timeseries_every, cfg->snapshot_every,
-                              dv->omega > 0.0 ? cfg->period : 0.0};
-    for (int k = 0; k < 3; k++)
+                              dv->omega > 0.0 ? cfg->period : 0.0,
+                              cfg->n_gauges + cfg->n_pressure_probes > 0 ? cfg->probes_every : 0.0};
+    for (int k = 0; k < 4; k++)
         if (landing[k] > 0.0) finest = fmin(finest, landing[k]);
-    e->steps = cfg->t_end / dv->dt + 0.5 * count_of(cfg->t_end, finest);
+    e->steps = fmax(cfg->t_end / dv->dt + 0.5 * count_of(cfg->t_end, finest),
+                    count_of(cfg->t_end, finest));
     double rows =
         cfg->timeseries_every > 0.0 ? count_of(cfg->t_end, cfg->timeseries_every) : e->steps;
     double output_us =
