@@ -335,7 +335,8 @@ static void probe_title(const plot_inputs *in, const char *column, char *buf, si
 {
     int k = 0;
     bool gauge = sscanf(column, "gauge_%d", &k) == 1;
-    bool pressure = !gauge && sscanf(column, "pressure_%d", &k) == 1;
+    bool pressure =
+        !gauge && (sscanf(column, "pressure_%d", &k) == 1 || sscanf(column, "sensor_%d", &k) == 1);
     const config *c = &in->cfg;
     if (in->has_case && gauge && k >= 1 && k <= c->n_gauges)
         snprintf(buf, size, "gauge %d: x = %g m", k, c->gauges[k - 1]);
@@ -383,20 +384,23 @@ static bool probes_have(const plot_inputs *in, const char *prefix)
     return false;
 }
 
-/* Gauges and pressures have different units: one panel each. */
+/* Gauges and pressures have different units: one panel each, and one for the filtered
+ * sensors (probes.filter). */
 static bool gp_plot_probes(FILE *f, const plot_inputs *in)
 {
     bool gauges = probes_have(in, "gauge_"), pressures = probes_have(in, "pressure_");
+    bool sensors = probes_have(in, "sensor_");
     if ((!gauges && !pressures) || csv_summary_column(&in->probes, "t") < 0) return false;
-    gp_begin_plot(f, in, "probes.png", gauges && pressures ? 900 : 600, "probes", "");
+    gp_begin_plot(f, in, "probes.png", 300 + 300 * (gauges + pressures + sensors), "probes", "");
     /* the panels share the title of the page */
-    fprintf(f, "set multiplot layout %d,1 title ", gauges + pressures);
+    fprintf(f, "set multiplot layout %d,1 title ", gauges + pressures + sensors);
     char title[CONFIG_NAME_MAX + 16];
     snprintf(title, sizeof title, "%s: probes", in->title_name);
     gp_put_quoted(f, title);
     fputs(" noenhanced\nunset title\n", f);
     if (gauges) gp_probe_panel(f, in, "gauge_", "liquid height (m)");
     if (pressures) gp_probe_panel(f, in, "pressure_", "pressure (Pa)");
+    if (sensors) gp_probe_panel(f, in, "sensor_", "pressure through the sensor's filter (Pa)");
     fputs("unset multiplot\n", f);
     return true;
 }
