@@ -72,9 +72,10 @@ static void test_first_impact_against_the_experiment(void **state)
     double sensor_peak = peak_after(t, table_column(&pr, "sensor_1"), n, t_arrival, SEARCH_S);
     double t_arrival_15 = arrival(t, table_column(&pr, "pressure_2"), n);
     double impulse = impulse_after(t, table_column(&pr, "pressure_2"), n, t_arrival_15, WINDOW_S);
-    printf("N = 100: arrival %.4f s, 3 mm sensor through 100 Hz %.2f kPa (measured band 7.51-13.10), "
-           "15 mm impulse %.1f Pa s (measured median 410.6, %+.1f %%)\n",
-           t_arrival, 1e-3 * sensor_peak, impulse, 100.0 * (impulse / 410.6 - 1.0));
+    printf(
+        "N = 100: arrival %.4f s, 3 mm sensor through 100 Hz %.2f kPa (measured band 7.51-13.10), "
+        "15 mm impulse %.1f Pa s (measured median 410.6, %+.1f %%)\n",
+        t_arrival, 1e-3 * sensor_peak, impulse, 100.0 * (impulse / 410.6 - 1.0));
     assert_true(t_arrival >= 0.400 && t_arrival <= 0.435);
     assert_true(sensor_peak >= 7506.0 && sensor_peak <= 13098.0);
     assert_close(impulse / 410.6, 1.0, 0.2);

@@ -30,21 +30,21 @@ static double next_time(double t, int k)
     return t + 1e-3 * (0.3 + 1.4 * fmod(k * 0.618034, 1.0));
 }
 
-static double step_response(sensor_filter_kind kind, double omega, double t)
+static double step_response(probes_filter_kind kind, double omega, double t)
 {
-    if (kind == SENSOR_FIRST_ORDER) return -expm1(-omega * t);
+    if (kind == PROBES_FIRST_ORDER) return -expm1(-omega * t);
     double wd = omega * M_SQRT1_2;
     return 1.0 - exp(-wd * t) * (cos(wd * t) + sin(wd * t));
 }
 
-static double ramp_response(sensor_filter_kind kind, double omega, double t)
+static double ramp_response(probes_filter_kind kind, double omega, double t)
 {
-    if (kind == SENSOR_FIRST_ORDER) return t + expm1(-omega * t) / omega;
+    if (kind == PROBES_FIRST_ORDER) return t + expm1(-omega * t) / omega;
     double wd = omega * M_SQRT1_2;
     return t - 1.0 / wd + exp(-wd * t) * cos(wd * t) / wd;
 }
 
-static void check_step_and_ramp(sensor_filter_kind kind)
+static void check_step_and_ramp(probes_filter_kind kind)
 {
     sensor_filter f = sensor_filter_make(kind, CUTOFF);
     /* a step: the input 1 from t = 0 on, the sensor at rest at 0 */
@@ -56,7 +56,7 @@ static void check_step_and_ramp(sensor_filter_kind kind)
         worst = fmax(worst, fabs(y - step_response(kind, f.omega, t)));
     }
     printf("%s step: largest error %.3e over %.1f ms\n",
-           kind == SENSOR_FIRST_ORDER ? "first order" : "Butterworth", worst, 1e3 * t);
+           kind == PROBES_FIRST_ORDER ? "first order" : "Butterworth", worst, 1e3 * t);
     assert_true(worst < 1e-12);
     /* a ramp u = t from rest: the first sample starts the sensor at rest at 0 */
     sensor_state r = {0};
@@ -75,17 +75,17 @@ static void check_step_and_ramp(sensor_filter_kind kind)
 static void test_first_order_exact(void **state)
 {
     (void)state;
-    check_step_and_ramp(SENSOR_FIRST_ORDER);
+    check_step_and_ramp(PROBES_FIRST_ORDER);
 }
 
 static void test_butterworth_exact(void **state)
 {
     (void)state;
-    check_step_and_ramp(SENSOR_BUTTERWORTH2);
+    check_step_and_ramp(PROBES_BUTTERWORTH);
 }
 
 /* The amplitude of the filtered sine of frequency f over its last two of 40 periods. */
-static double gain(sensor_filter_kind kind, double f)
+static double gain(probes_filter_kind kind, double f)
 {
     sensor_filter filter = sensor_filter_make(kind, CUTOFF);
     sensor_state s = {0};
@@ -105,8 +105,8 @@ static void test_gain(void **state)
     const double ratios[] = {0.5, 1.0, 2.0, 4.0};
     for (size_t k = 0; k < sizeof ratios / sizeof ratios[0]; k++) {
         double x = ratios[k];
-        double first = gain(SENSOR_FIRST_ORDER, x * CUTOFF),
-               butter = gain(SENSOR_BUTTERWORTH2, x * CUTOFF);
+        double first = gain(PROBES_FIRST_ORDER, x * CUTOFF),
+               butter = gain(PROBES_BUTTERWORTH, x * CUTOFF);
         double first_exact = 1.0 / sqrt(1.0 + x * x),
                butter_exact = 1.0 / sqrt(1.0 + x * x * x * x);
         printf("f / f_c = %.1f: first order %.5f (|H| %.5f), Butterworth %.5f (|H| %.5f)\n", x,
@@ -119,10 +119,10 @@ static void test_gain(void **state)
 static void test_raw_and_checkpoint(void **state)
 {
     (void)state;
-    sensor_filter raw = sensor_filter_make(SENSOR_RAW, CUTOFF);
+    sensor_filter raw = sensor_filter_make(PROBES_RAW, CUTOFF);
     sensor_state s = {0};
     assert_true(sensor_filter_sample(&raw, &s, 0.1, 1234.5) == 1234.5);
-    sensor_filter f = sensor_filter_make(SENSOR_BUTTERWORTH2, CUTOFF);
+    sensor_filter f = sensor_filter_make(PROBES_BUTTERWORTH, CUTOFF);
     sensor_state through = {0}, resumed = {0};
     double t = 0.0, y_through = 0.0, y_resumed = 0.0;
     for (int k = 0; k < 50; k++) {

@@ -207,7 +207,7 @@ static int write_checkpoint(run *r, const particles *whole, const char *path, ch
     add(&l, "eta_samples", CHECKPOINT_F64, ETA_HISTORY, e->samples, NULL);
     add(&l, "run_i64", CHECKPOINT_I64, 4, run_i64, RUN_I64);
     double probes_state[RUN_PROBES_STATE_MAX];
-    if (run_has_probes(r->cfg))
+    if (config_has_probes(r->cfg))
         add(&l, "probes_f64", CHECKPOINT_F64, run_probes_state(r, probes_state), probes_state,
             NULL);
     add(&l, "csv_sizes", CHECKPOINT_I64, RUN_N_CSV, csv_sizes, CSV_SIZES);
@@ -386,7 +386,7 @@ static int load_outputs(run *r, const checkpoint_data *cd, char *err, size_t err
     r->n_images = (int)k[2];
     r->speed_warned = (int)k[3];
     for (int c = 0; c < RUN_N_CSV; c++) r->resume_sizes[c] = sizes[c];
-    if (run_has_probes(r->cfg)) {
+    if (config_has_probes(r->cfg)) {
         double state[RUN_PROBES_STATE_MAX];
         size_t n = run_probes_state(r, state); /* the count this case keeps */
         const checkpoint_array *a =

@@ -585,7 +585,7 @@ static int open_files(run *r)
     if (run_has_periods(r) &&
         open_csv(r, RUN_CSV_DISSIPATION, "period,t_start,t_end,e_diss,power,power_norm,e_surface"))
         return -1;
-    if (run_has_probes(r->cfg) && open_probes(r)) return -1;
+    if (config_has_probes(r->cfg) && open_probes(r)) return -1;
     if (open_csv(r, RUN_CSV_EVENTS, "t,event,detail")) return -1;
     if (open_csv(r, RUN_CSV_LOADS,
                  DIM == 2 ? "t,fx,fy,mx,my,mz,fx_inertial,fy_inertial,mx_inertial,my_inertial,"

@@ -9,13 +9,6 @@
 
 #include <stdio.h>
 
-static sensor_filter_kind filter_kind(probes_filter_kind k)
-{
-    return k == PROBES_FIRST_ORDER   ? SENSOR_FIRST_ORDER
-           : k == PROBES_BUTTERWORTH ? SENSOR_BUTTERWORTH2
-                                     : SENSOR_RAW;
-}
-
 void run_probes_start(run *r, char *header, size_t size)
 {
     const config *cfg = r->cfg;
@@ -31,7 +24,7 @@ void run_probes_start(run *r, char *header, size_t size)
             len += snprintf(header + len, size - (size_t)len, ",sensor_%d", k + 1);
     probes_init(&r->probes, r->s.dv.h, r->s.dv.dr, r->s.dv.cell_volume,
                 cfg->dim == 3 ? cfg->tank_width : 1.0);
-    r->sensor_filter = sensor_filter_make(filter_kind(cfg->probes_filter), cfg->probes_cutoff);
+    r->sensor_filter = sensor_filter_make(cfg->probes_filter, cfg->probes_cutoff);
 }
 
 /* On a split solver, the liquid and its walls' images as one process holds them, for the

@@ -90,11 +90,6 @@ static inline void snapshot_name(int k, char *name, size_t size)
 /* Dissipation per period needs a periodic excitation (sway or heave with a period). */
 static inline int run_has_periods(const run *r) { return r->s.dv.omega > 0.0; }
 
-static inline int run_has_probes(const config *cfg)
-{
-    return cfg->n_gauges + cfg->n_pressure_probes > 0;
-}
-
 /* The end of the excitation period in progress, kT. */
 static inline double run_period_end(const run *r) { return (double)r->period * r->cfg->period; }
 

@@ -82,11 +82,9 @@ static int output_due(double t, double every, double *next, int last)
 static double step_stop(const run *r)
 {
     const config *cfg = r->cfg;
-    double t = r->s.t, stop = cfg->t_end;
-    if (run_has_periods(r)) stop = fmin(stop, next_multiple(t, cfg->period));
-    const double every[] = {cfg->timeseries_every, cfg->snapshot_every,
-                            run_has_probes(cfg) ? cfg->probes_every : 0.0};
-    for (int k = 0; k < 3; k++)
+    double t = r->s.t, stop = cfg->t_end, every[CONFIG_LANDINGS];
+    config_landing_intervals(cfg, r->s.dv.omega, every);
+    for (int k = 0; k < CONFIG_LANDINGS; k++)
         if (every[k] > 0.0) stop = fmin(stop, next_multiple(t, every[k]));
     return stop;
 }
@@ -100,7 +98,7 @@ static int outputs_due(run *r, int last)
         run_write_series_row(r, 1);
         run_write_loads_row(r);
     }
-    if (run_has_probes(cfg) && output_due(t, cfg->probes_every, &r->next_probes, last))
+    if (config_has_probes(cfg) && output_due(t, cfg->probes_every, &r->next_probes, last))
         run_write_probes_row(r);
     if (run_has_periods(r) && t >= run_period_end(r) * (1.0 - 1e-12)) run_write_dissipation_row(r);
     if (cfg->image_every > 0 && output_due(t, cfg->image_every, &r->next_image, last) &&

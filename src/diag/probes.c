@@ -124,6 +124,17 @@ double probes_level(const probes *pr, const particles *p, double x)
     return level;
 }
 
+/* |x_j - x|^2 */
+static inline double distance2(const particles *p, size_t j, const double x[3])
+{
+    double r2 = 0.0;
+    for (int d = 0; d < DIM; d++) {
+        double dx = p->x[d][j] - x[d];
+        r2 += dx * dx;
+    }
+    return r2;
+}
+
 /* The Shepard interpolation of the pressure at x over the particles `near` (all when NULL,
  * n_near ignored). */
 static double shepard_pressure(const probes *pr, const particles *p, const double x[3],
@@ -133,11 +144,7 @@ static double shepard_pressure(const probes *pr, const particles *p, const doubl
     size_t n = near ? n_near : p->n_total;
     for (size_t m = 0; m < n; m++) {
         size_t j = near ? near[m] : m;
-        double r2 = 0.0;
-        for (int d = 0; d < DIM; d++) {
-            double dx = p->x[d][j] - x[d];
-            r2 += dx * dx;
-        }
+        double r2 = distance2(p, j, x);
         if (r2 >= pr->k.support2) continue;
         double wv = kernel_w(&pr->k, sqrt(r2)) * p->vol[j];
         weighted += p->p[j] * wv;
@@ -160,14 +167,8 @@ static size_t *particles_near_face(const probes *pr, const particles *p, const d
     if (!near) return NULL;
     double reach = radius + 2.0 * pr->k.h, reach2 = reach * reach;
     size_t n = 0;
-    for (size_t j = 0; j < p->n_total; j++) {
-        double r2 = 0.0;
-        for (int d = 0; d < DIM; d++) {
-            double dx = p->x[d][j] - x[d];
-            r2 += dx * dx;
-        }
-        if (r2 < reach2) near[n++] = j;
-    }
+    for (size_t j = 0; j < p->n_total; j++)
+        if (distance2(p, j, x) < reach2) near[n++] = j;
     *n_near = n;
     return near;
 }

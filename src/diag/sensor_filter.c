@@ -4,7 +4,7 @@
 
 #include <math.h>
 
-sensor_filter sensor_filter_make(sensor_filter_kind kind, double cutoff_hz)
+sensor_filter sensor_filter_make(probes_filter_kind kind, double cutoff_hz)
 {
     sensor_filter f = {kind, 2.0 * M_PI * cutoff_hz};
     return f;
@@ -45,14 +45,14 @@ static void butterworth2_step(double omega, sensor_state *s, double dt, double u
 
 double sensor_filter_sample(const sensor_filter *f, sensor_state *s, double t, double u)
 {
-    if (f->kind == SENSOR_RAW) return u;
+    if (f->kind == PROBES_RAW) return u;
     if (!s->started) {
         *s = (sensor_state){.y = u, .rate = 0.0, .u = u, .t = t, .started = true};
         return u;
     }
     double dt = t - s->t;
     if (dt > 0.0) {
-        if (f->kind == SENSOR_FIRST_ORDER)
+        if (f->kind == PROBES_FIRST_ORDER)
             first_order_step(f->omega, s, dt, u);
         else
             butterworth2_step(f->omega, s, dt, u);

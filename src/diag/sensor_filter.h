@@ -11,12 +11,12 @@
 #ifndef VCSPH_SENSOR_FILTER_H
 #define VCSPH_SENSOR_FILTER_H
 
+#include "core/config.h" /* probes_filter_kind: raw, first order, Butterworth */
+
 #include <stdbool.h>
 
-typedef enum { SENSOR_RAW, SENSOR_FIRST_ORDER, SENSOR_BUTTERWORTH2 } sensor_filter_kind;
-
 typedef struct {
-    sensor_filter_kind kind;
+    probes_filter_kind kind;
     double omega; /* w_c = 2 pi f_c, rad/s */
 } sensor_filter;
 
@@ -31,10 +31,10 @@ typedef struct {
 /* The states as numbers, for a checkpoint: y, rate, u, t, started (0 or 1). */
 #define SENSOR_STATE_VALUES 5
 
-sensor_filter sensor_filter_make(sensor_filter_kind kind, double cutoff_hz);
+sensor_filter sensor_filter_make(probes_filter_kind kind, double cutoff_hz);
 
 /* Feeds the sample u taken at time t (t >= the last sample's) and returns the filtered
- * value; SENSOR_RAW returns u. */
+ * value; PROBES_RAW returns u. */
 double sensor_filter_sample(const sensor_filter *f, sensor_state *s, double t, double u);
 
 void sensor_state_pack(const sensor_state *s, double out[SENSOR_STATE_VALUES]);

@@ -60,11 +60,9 @@ static void estimate_seconds(const config *cfg, const derived *dv, run_estimate 
     e->speedup = e->threads > 1 && step_p < step_1 ? step_1 / step_p : 1.0;
     /* the finest interval a step lands on sets the extra steps; one finer than the step cuts
        every step to it */
-    double finest = cfg->t_end;
-    const double landing[] = {cfg->timeseries_every, cfg->snapshot_every,
-                              dv->omega > 0.0 ? cfg->period : 0.0,
-                              cfg->n_gauges + cfg->n_pressure_probes > 0 ? cfg->probes_every : 0.0};
-    for (int k = 0; k < 4; k++)
+    double finest = cfg->t_end, landing[CONFIG_LANDINGS];
+    config_landing_intervals(cfg, dv->omega, landing);
+    for (int k = 0; k < CONFIG_LANDINGS; k++)
         if (landing[k] > 0.0) finest = fmin(finest, landing[k]);
     e->steps = fmax(cfg->t_end / dv->dt + 0.5 * count_of(cfg->t_end, finest),
                     count_of(cfg->t_end, finest));
