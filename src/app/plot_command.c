@@ -2,11 +2,11 @@
  * data (gnuplot stops a whole script at a plot without a single point), writes one gnuplot
  * script that refers to the data by column name, and runs gnuplot on it. */
 #include "app/plot_command.h"
+#include "app/gnuplot_run.h"
 #include "core/config.h"
 #include "io/csv_read.h"
 
 #include <errno.h>
-#include <fcntl.h>
 #include <math.h>
 #include <stdbool.h>
 #include <stdio.h>
@@ -14,7 +14,6 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <sys/types.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #define PLOT_SCRIPT "plot.gp"
@@ -476,63 +475,6 @@ static int plot_write_script(const char *path, const plot_inputs *in, bool drawn
     return PLOT_OK;
 }
 
-/* ---- gnuplot -------------------------------------------------------------------------------- */
-
-/* Runs `gnuplot plot.gp` in dir without a shell (no quoting of the directory's name). A pipe
- * closed on exec tells a missing gnuplot apart from a gnuplot that failed. */
-static int plot_run_gnuplot(const char *dir, char *err, size_t err_len)
-{
-    int report[2];
-    if (pipe(report) || fcntl(report[1], F_SETFD, FD_CLOEXEC)) {
-        snprintf(err, err_len, "vcsph plot: cannot run gnuplot: %s", strerror(errno));
-        return PLOT_FAILED;
-    }
-    fflush(NULL);
-    pid_t pid = fork();
-    if (pid == 0) {
-        close(report[0]);
-        int why[2] = {0, 0}; /* {0 chdir / 1 exec, errno} */
-        if (chdir(dir) == 0) {
-            execlp("gnuplot", "gnuplot", PLOT_SCRIPT, (char *)NULL);
-            why[0] = 1;
-        }
-        why[1] = errno;
-        if (write(report[1], why, sizeof why) < 0) _exit(127);
-        _exit(127);
-    }
-    close(report[1]);
-    if (pid < 0) {
-        close(report[0]);
-        snprintf(err, err_len, "vcsph plot: cannot run gnuplot: %s", strerror(errno));
-        return PLOT_FAILED;
-    }
-    int why[2];
-    ssize_t got;
-    while ((got = read(report[0], why, sizeof why)) < 0 && errno == EINTR) continue;
-    close(report[0]);
-    int status;
-    while (waitpid(pid, &status, 0) < 0 && errno == EINTR) continue;
-    if (got == (ssize_t)sizeof why) {
-        if (why[0] == 1 && why[1] == ENOENT)
-            snprintf(err, err_len,
-                     "vcsph plot: gnuplot is not installed (not found in PATH); "
-                     "the script is %s/%s",
-                     dir, PLOT_SCRIPT);
-        else
-            snprintf(err, err_len, "vcsph plot: cannot run gnuplot in %s: %s", dir,
-                     strerror(why[1]));
-        return PLOT_FAILED;
-    }
-    if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return PLOT_OK;
-    if (WIFEXITED(status))
-        snprintf(err, err_len, "vcsph plot: gnuplot failed with exit status %d on %s/%s",
-                 WEXITSTATUS(status), dir, PLOT_SCRIPT);
-    else
-        snprintf(err, err_len, "vcsph plot: gnuplot was killed by signal %d on %s/%s",
-                 WTERMSIG(status), dir, PLOT_SCRIPT);
-    return PLOT_FAILED;
-}
-
 /* ---- the command ---------------------------------------------------------------------------- */
 
 static int plot_check_dir(const char *dir, char *err, size_t err_len)
@@ -622,7 +564,7 @@ int plot_command_run(const char *dir, plot_report *report, char *err, size_t err
     plot_inputs_free(in);
     free(in);
     if (!status) status = plot_remove_old(report, drawn, err, err_len);
-    if (!status) status = plot_run_gnuplot(report->images_dir, err, err_len);
+    if (!status) status = gnuplot_run(report->images_dir, PLOT_SCRIPT, err, err_len);
     if (!status) status = plot_check_written(report, drawn, err, err_len);
     return status;
 }
