@@ -109,7 +109,7 @@ static inline double run_period_end(const run *r) { return (double)r->period * r
 #define run_gather                DIM_NAME(run_gather)
 #define run_gathered_free         DIM_NAME(run_gathered_free)
 
-/* ---- run_outputs.c: the files of a run ---- */
+/* ---- run_gather.c, run_outputs.c: the fluid on the writing process, the files of a run ---- */
 
 /* What run_gather brings together: the positions; the fields of a snapshot (docs/outputs.md);
  * the state a checkpoint keeps (FIELD_STATE); what the probes and the walls' images they read
