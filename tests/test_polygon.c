@@ -6,7 +6,7 @@
  * - the wall distance against hand-computed distances to the nearest edge or corner, with the
  *   normal into the polygon, inside (positive) and outside (negative), at a chamfer's slanted
  *   wall, off a convex corner and by an L's reflex corner, where the nearest point is the
- *   corner itself;
+ *   corner itself, and which edge or corner holds that point;
  * - the refusals, each naming what the user wrote: fewer than three corners, a corner repeated,
  *   corners on one line, edges that cross (a bow tie), touch (a corner on another edge) or fold
  *   back (a spike), with the edges numbered as the list numbers them. */
@@ -113,11 +113,15 @@ static void test_wall_distance(void **state)
     /* inside, by the L's reflex corner (0.5, 0.5): the corner is nearest to (0.45, 0.45), at
        0.05 sqrt(2), not either wall through it; the normal points away from it */
     check_distance(&l, 0.45, 0.45, 0.05 / r, -r, -r);
-    /* in the notch, outside: the nearer of the two walls through that corner */
-    int edge;
+    int feature;
     double n[2];
-    assert_true(fabs(polygon_wall_distance(&l, 0.6, 0.58, n, &edge) + 0.08) < ROUND_OFF);
-    assert_int_equal(edge, 2); /* corner 2 (1, 0.5) to corner 3 (0.5, 0.5) */
+    polygon_wall_distance(&l, 0.45, 0.45, n, &feature);
+    assert_int_equal(feature, 6 + 3); /* corner 3, (0.5, 0.5) */
+    polygon_wall_distance(&c, 1.1, 0.6, n, &feature);
+    assert_int_equal(feature, 6 + 3); /* corner 3, (1, 0.5) */
+    /* in the notch, outside: the nearer of the two walls through that corner */
+    assert_true(fabs(polygon_wall_distance(&l, 0.6, 0.58, n, &feature) + 0.08) < ROUND_OFF);
+    assert_int_equal(feature, 2); /* the edge from corner 2 (1, 0.5) to corner 3 (0.5, 0.5) */
     assert_true(n[0] == 0 && n[1] == -1);
     polygon_free(&c);
     polygon_free(&l);

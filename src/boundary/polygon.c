@@ -151,23 +151,32 @@ int polygon_contains(const polygon *pg, double x, double y)
     return inside;
 }
 
-double polygon_wall_distance(const polygon *pg, double x, double y, double normal[2], int *edge)
+/* The point of edge k nearest to (x, y): its parameter t along the edge (0 at corner k, 1 at
+ * corner k + 1), and its distance. */
+static double edge_foot(const polygon *pg, int k, double x, double y, double *t)
 {
-    double best = INFINITY, best_t = 0.0, qx = 0.0, qy = 0.0;
+    const double *a = pg->corner[k], *b = pg->corner[(k + 1) % pg->n];
+    double ex = b[0] - a[0], ey = b[1] - a[1];
+    *t = fmin(1.0, fmax(0.0, ((x - a[0]) * ex + (y - a[1]) * ey) / (ex * ex + ey * ey)));
+    return hypot(x - (a[0] + *t * ex), y - (a[1] + *t * ey));
+}
+
+/* The feature that holds the point of edge k at parameter t. */
+static int feature_of(const polygon *pg, int k, double t)
+{
+    return t > 0.0 && t < 1.0 ? k : t == 0.0 ? pg->n + k : pg->n + (k + 1) % pg->n;
+}
+
+double polygon_wall_distance(const polygon *pg, double x, double y, double normal[2], int *feature)
+{
+    double best = INFINITY, best_t = 0.0;
     int best_edge = 0;
     for (int k = 0; k < pg->n; k++) {
-        const double *a = pg->corner[k], *b = pg->corner[(k + 1) % pg->n];
-        double ex = b[0] - a[0], ey = b[1] - a[1];
-        double t = ((x - a[0]) * ex + (y - a[1]) * ey) / (ex * ex + ey * ey);
-        t = fmin(1.0, fmax(0.0, t));
-        double px = a[0] + t * ex, py = a[1] + t * ey;
-        double d = hypot(x - px, y - py);
+        double t, d = edge_foot(pg, k, x, y, &t);
         if (d < best) {
             best = d;
             best_t = t;
             best_edge = k;
-            qx = px;
-            qy = py;
         }
     }
     double sign = polygon_contains(pg, x, y) ? 1.0 : -1.0;
@@ -178,9 +187,30 @@ double polygon_wall_distance(const polygon *pg, double x, double y, double norma
         normal[0] = -(b[1] - a[1]) / len;
         normal[1] = (b[0] - a[0]) / len;
     } else { /* nearest to a corner: along the line from it, towards the inside */
-        normal[0] = sign * (x - qx) / best;
-        normal[1] = sign * (y - qy) / best;
+        const double *q = best_t == 0.0 ? a : b;
+        normal[0] = sign * (x - q[0]) / best;
+        normal[1] = sign * (y - q[1]) / best;
     }
-    if (edge) *edge = best_edge;
+    if (feature) *feature = feature_of(pg, best_edge, best_t);
     return sign * best;
+}
+
+int polygon_nearest_feature(const polygon *pg, double x, double y, double tie)
+{
+    double best = INFINITY;
+    for (int k = 0; k < pg->n; k++) {
+        double t;
+        best = fmin(best, edge_foot(pg, k, x, y, &t));
+    }
+    int lowest = 2 * pg->n;
+    for (int k = 0; k < pg->n; k++) {
+        double t, d = edge_foot(pg, k, x, y, &t);
+        if (d > best + tie) continue;
+        /* a foot within `tie` of a corner is that corner's */
+        const double *a = pg->corner[k], *b = pg->corner[(k + 1) % pg->n];
+        double len = hypot(b[0] - a[0], b[1] - a[1]);
+        int f = t * len <= tie ? pg->n + k : (1.0 - t) * len <= tie ? pg->n + (k + 1) % pg->n : k;
+        if (f < lowest) lowest = f;
+    }
+    return lowest;
 }

@@ -34,10 +34,17 @@ void polygon_bounds(const polygon *pg, double lo[2], double hi[2]);
 /* Whether (x, y) lies inside (points on an edge count as inside). */
 int polygon_contains(const polygon *pg, double x, double y);
 
-/* The distance from (x, y) to the nearest point of the boundary, the unit normal of the wall
- * there pointing into the polygon (at a corner, the direction from that corner to the point,
- * or away from it for a point outside), and the edge that holds that point (its first corner's
- * index in pg->corner). The distance is positive inside and negative outside. */
-double polygon_wall_distance(const polygon *pg, double x, double y, double normal[2], int *edge);
+/* The distance from (x, y) to the nearest point of the boundary, positive inside and negative
+ * outside; the unit normal of the wall there pointing into the polygon (at a corner, along the
+ * line from that corner to the point, towards the inside); and the feature that holds that
+ * point: k for the inside of edge k (from corner k to k + 1), n + k for corner k. */
+double polygon_wall_distance(const polygon *pg, double x, double y, double normal[2], int *feature);
+
+/* The feature (numbered as polygon_wall_distance's) that holds the nearest point of the
+ * boundary to (x, y), a foot within `tie` of a corner counting as that corner's; where several
+ * lie within `tie` of the nearest distance, the lowest-numbered of them. A point on the line
+ * between two features' regions (the bisector of two walls, a corner's normal) so has one,
+ * whichever round-off it was computed with. */
+int polygon_nearest_feature(const polygon *pg, double x, double y, double tie);
 
 #endif
