@@ -113,7 +113,6 @@ static void test_turned_square_continues_the_lattice(void **state)
     assert_true(worst < 1e-12);
     free(liquid.x);
     free(images.x);
-    polygon_free(&pg);
 }
 
 /* The points of the axis lattice of spacing dr (offset by dr / 2 from the bounding box) that lie
@@ -166,7 +165,6 @@ static void test_chamfered_section_band(void **state)
     assert_int_equal(inside, 0);
     free(liquid.x);
     free(images.x);
-    polygon_free(&pg);
 }
 
 static void test_reflex_corner_tiles_once(void **state)
@@ -185,7 +183,6 @@ static void test_reflex_corner_tiles_once(void **state)
     assert_int_equal(inside, 0);
     free(liquid.x);
     free(images.x);
-    polygon_free(&pg);
 }
 
 int main(void)

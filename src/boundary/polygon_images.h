@@ -12,7 +12,7 @@
 #ifndef VCSPH_POLYGON_IMAGES_H
 #define VCSPH_POLYGON_IMAGES_H
 
-#include "boundary/polygon.h"
+#include "core/polygon.h"
 
 /* An image's map: x' = a x + b (positions), v' = a v (vectors). */
 typedef struct {

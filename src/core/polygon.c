@@ -1,9 +1,8 @@
 /* polygon: checks of a tank's section, and the inside test and wall distance on it. */
-#include "boundary/polygon.h"
+#include "core/polygon.h"
 
 #include <math.h>
 #include <stdio.h>
-#include <stdlib.h>
 
 /* Twice the signed area of the triangle a, b, c: > 0 when c lies left of a -> b. */
 static double orient(const double a[2], const double b[2], const double c[2])
@@ -75,9 +74,10 @@ static int first_crossing(const double *xy, int n, int *e1, int *e2)
 
 int polygon_make(polygon *pg, const double *xy, int n, char *err, size_t err_len)
 {
-    *pg = (polygon){0};
-    if (n < 3) {
-        snprintf(err, err_len, "a polygon needs at least three corners, %d given", n);
+    pg->n = 0;
+    if (n < 3 || n > POLYGON_CORNERS_MAX) {
+        snprintf(err, err_len, "a polygon needs at least three corners and at most %d, %d given",
+                 POLYGON_CORNERS_MAX, n);
         return -1;
     }
     for (int k = 0; k < n; k++) {
@@ -97,13 +97,6 @@ int polygon_make(polygon *pg, const double *xy, int n, char *err, size_t err_len
         return -1;
     }
     double area2 = signed_double_area(xy, n); /* not 0: a simple polygon encloses an area */
-    pg->corner = malloc((size_t)n * sizeof *pg->corner);
-    pg->order = malloc((size_t)n * sizeof *pg->order);
-    if (!pg->corner || !pg->order) {
-        polygon_free(pg);
-        snprintf(err, err_len, "out of memory");
-        return -1;
-    }
     pg->n = n;
     for (int k = 0; k < n; k++) {
         int from = area2 > 0.0 ? k : n - 1 - k; /* clockwise lists are reversed */
@@ -112,13 +105,6 @@ int polygon_make(polygon *pg, const double *xy, int n, char *err, size_t err_len
         pg->order[k] = from + 1;
     }
     return 0;
-}
-
-void polygon_free(polygon *pg)
-{
-    free(pg->corner);
-    free(pg->order);
-    *pg = (polygon){0};
 }
 
 double polygon_area(const polygon *pg)

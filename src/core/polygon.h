@@ -7,23 +7,26 @@
 
 #include <stddef.h>
 
+/* The most corners a section may have: its images' maps (two per corner) are numbered in a
+ * byte (core/particles.h). */
+#define POLYGON_CORNERS_MAX 128
+
 /* The corners, counter-clockwise (the liquid on the left of each edge), edge k running from
  * corner k to corner k + 1 (mod n). `order` maps a corner back to its place in the list the
- * user gave (1-based, as messages name it), since a clockwise list is reversed. */
+ * user gave (1-based, as messages name it), since a clockwise list is reversed. A value: it
+ * holds no memory of its own. */
 typedef struct {
     int n;
-    double (*corner)[2];
-    int *order;
+    double corner[POLYGON_CORNERS_MAX][2];
+    int order[POLYGON_CORNERS_MAX];
 } polygon;
 
 /* The polygon of the n corners xy[0..2n): (x, y) pairs in metres, in either direction, closed
  * automatically. Refused, with a message in err that names the corners as the list numbers
- * them (1-based): fewer than three corners, two consecutive corners at one point, two edges
- * that cross, touch or fold back on each other other than at a shared corner (corners on one
- * line fold back). Returns 0, or
- * -1 (nothing allocated; err says why, or "out of memory"). */
+ * them (1-based): fewer than three corners or more than POLYGON_CORNERS_MAX, two consecutive
+ * corners at one point, two edges that cross, touch or fold back on each other other than at a
+ * shared corner (corners on one line fold back). Returns 0, or -1 (err says why). */
 int polygon_make(polygon *pg, const double *xy, int n, char *err, size_t err_len);
-void polygon_free(polygon *pg);
 
 /* The area enclosed, in m^2 (positive). */
 double polygon_area(const polygon *pg);
