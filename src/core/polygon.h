@@ -8,7 +8,7 @@
 #include <stddef.h>
 
 /* The most corners a section may have, so that a polygon is a value a case's config can hold
- * (a circle of 128 sides is within 0.03 % of its area). */
+ * (a circle of 128 sides is within 0.04 % of its area). */
 #define POLYGON_CORNERS_MAX 128
 
 /* The corners, counter-clockwise (the liquid on the left of each edge), edge k running from
