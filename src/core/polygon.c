@@ -180,23 +180,3 @@ double polygon_wall_distance(const polygon *pg, double x, double y, double norma
     if (feature) *feature = feature_of(pg, best_edge, best_t);
     return sign * best;
 }
-
-int polygon_nearest_feature(const polygon *pg, double x, double y, double tie)
-{
-    double best = INFINITY;
-    for (int k = 0; k < pg->n; k++) {
-        double t;
-        best = fmin(best, edge_foot(pg, k, x, y, &t));
-    }
-    int lowest = 2 * pg->n;
-    for (int k = 0; k < pg->n; k++) {
-        double t, d = edge_foot(pg, k, x, y, &t);
-        if (d > best + tie) continue;
-        /* a foot within `tie` of a corner is that corner's */
-        const double *a = pg->corner[k], *b = pg->corner[(k + 1) % pg->n];
-        double len = hypot(b[0] - a[0], b[1] - a[1]);
-        int f = t * len <= tie ? pg->n + k : (1.0 - t) * len <= tie ? pg->n + (k + 1) % pg->n : k;
-        if (f < lowest) lowest = f;
-    }
-    return lowest;
-}

@@ -43,11 +43,4 @@ int polygon_contains(const polygon *pg, double x, double y);
  * point: k for the inside of edge k (from corner k to k + 1), n + k for corner k. */
 double polygon_wall_distance(const polygon *pg, double x, double y, double normal[2], int *feature);
 
-/* The feature (numbered as polygon_wall_distance's) that holds the nearest point of the
- * boundary to (x, y), a foot within `tie` of a corner counting as that corner's; where several
- * lie within `tie` of the nearest distance, the lowest-numbered of them. A point on the line
- * between two features' regions (the bisector of two walls, a corner's normal) so has one,
- * whichever round-off it was computed with. */
-int polygon_nearest_feature(const polygon *pg, double x, double y, double tie);
-
 #endif
