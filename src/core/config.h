@@ -152,6 +152,7 @@ const char *config_edbc_name(edbc_mode e);
 const char *config_volume_correction_name(volume_correction_kind v);
 const char *config_eta_control_name(eta_control_kind e);
 const char *config_wall_name(wall_kind w);
+const char *config_liquid_shape_name(liquid_shape_kind s);
 
 /* Whether the case has probes (gauges or pressure points), so probes.csv and its rows. */
 static inline bool config_has_probes(const config *cfg)
@@ -171,7 +172,7 @@ static inline void config_landing_intervals(const config *cfg, double omega,
     every[2] = config_has_probes(cfg) ? cfg->probes_every : 0.0;
     every[3] = omega > 0.0 ? cfg->period : 0.0;
 }
-const char *config_liquid_shape_name(liquid_shape_kind s);
+
 /* The axis (0, 1, 2) of the tank wall that the point x (m) lies on, -1 when it lies on none,
  * -2 when on more than one (an edge or a corner). */
 int config_wall_axis(const config *cfg, const double x[3]);

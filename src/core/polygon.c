@@ -40,6 +40,14 @@ static double signed_double_area(const double *xy, int n)
     return s;
 }
 
+/* Whether the edges from corner `shared` to p and to q run along one ray: two edges that share
+ * a corner meet only there unless one folds back over the other. */
+static int folds_back(const double p[2], const double shared[2], const double q[2])
+{
+    double dot = (p[0] - shared[0]) * (q[0] - shared[0]) + (p[1] - shared[1]) * (q[1] - shared[1]);
+    return orient(p, shared, q) == 0.0 && dot > 0.0;
+}
+
 /* The first pair of edges (in the user's numbering, edge k from corner k to k + 1) that cross,
  * touch or fold back on each other; 0 when there is none. */
 static int first_crossing(const double *xy, int n, int *e1, int *e2)
@@ -48,20 +56,9 @@ static int first_crossing(const double *xy, int n, int *e1, int *e2)
         const double *a = xy + 2 * k, *b = xy + 2 * ((k + 1) % n);
         for (int l = k + 1; l < n; l++) {
             const double *c = xy + 2 * l, *d = xy + 2 * ((l + 1) % n);
-            int adjacent_after = l == k + 1, adjacent_before = (l + 1) % n == k;
-            int meet;
-            if (adjacent_after || adjacent_before) {
-                /* sharing one corner: they may meet only there, so a fold back along the same
-                   line is a crossing (for a triangle both are true and neither folds) */
-                const double *shared = adjacent_after ? b : a;
-                const double *p = adjacent_after ? a : b, *q = adjacent_after ? d : c;
-                meet =
-                    orient(p, shared, q) == 0.0 && (q[0] - shared[0]) * (p[0] - shared[0]) +
-                                                           (q[1] - shared[1]) * (p[1] - shared[1]) >
-                                                       0.0;
-            } else {
-                meet = segments_meet(a, b, c, d);
-            }
+            int meet = l == k + 1         ? folds_back(a, b, d) /* edge l starts where k ends */
+                       : (l + 1) % n == k ? folds_back(b, a, c) /* edge l ends where k starts */
+                                          : segments_meet(a, b, c, d);
             if (meet) {
                 *e1 = k;
                 *e2 = l;
