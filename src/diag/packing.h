@@ -1,7 +1,7 @@
 /* packing: how closely the free-surface particles sit, from the positions: the one part of the
  * liquid's geometry that Eq. (12) cannot see (it counts S_F at V_i0), and the cause of the
  * graphical method's reading below it where the surface clumps (docs/graphical-method.md,
- * "Controlled runs"). Particle code: compiled for DIM = 2 and 3. */
+ * "Why, and what was tried"). Particle code: compiled for DIM = 2 and 3. */
 #ifndef VCSPH_PACKING_H
 #define VCSPH_PACKING_H
 
