@@ -1,5 +1,5 @@
 /* The passes that sum a row in blocks of eight entries (core/pair_block.h: the geometry pass,
- * the density and mass diffusion, the shifting and the correction velocity, scheme/fields.c)
+ * the density and mass diffusion, the shifting and the correction velocity, scheme/step_fields.c)
  * sum the terms of their pair functions: on a disordered block of liquid in a tank (wall
  * ghosts, random velocities), each particle's kernel sums, diffusion terms, shifting and
  * correction velocities against the same terms summed pair by pair in the row's order with the
@@ -16,7 +16,7 @@
 #include "physics/shifting.h"
 #include "physics/viscosity.h"
 #include "physics/volume_correction.h"
-#include "scheme/fields.h"
+#include "scheme/step_fields.h"
 #include "scheme/solver.h"
 #include "scheme/volume_correction.h"
 
@@ -68,7 +68,7 @@ static void shifting_and_correction_follow_their_pair_functions(solver *s)
     const physics_params *pp = &s->pp;
     particles *p = &s->p;
     neighbour_list rows = neighbours_near(&s->nl);
-    fields_shifting_and_correction(pp, p, &rows, true, true, NULL, DIFFUSION_ROWS_NONE);
+    step_fields_shifting_and_correction(pp, p, &rows, true, true, NULL, DIFFUSION_ROWS_NONE);
     for (size_t i = 0; i < p->n_fluid; i++) {
         if (p->lambda[i] < SHIFTING_LAMBDA_MIN) continue;
         vec xi = vec_load(p->x, i), ui = vec_load(p->u, i);
@@ -94,7 +94,8 @@ static void shifting_and_correction_follow_their_pair_functions(solver *s)
             shifting_bound += 2.0 * reorder_bound(&shifting[d], scale);
             correction_bound += 2.0 * reorder_bound(&correction[d], scale);
         }
-        vec du = gradient_beyond_floor(shifting_sum, fields_compression_gradient(p, i));
+        vec du = gradient_beyond_floor(shifting_sum,
+                                       compression_gradient(vec_load(p->grad_rho, i), p->rho[i]));
         du = shifting_limit(vec_scale(du, -scale), sqrt(max_relative2), pp->shift_u_max);
         if (p->surface[i] != SURFACE_INTERIOR) du = shifting_tangential(du, vec_load(p->normal, i));
         if (p->surface[i] == SURFACE_FREE && pp->unpack_speed > 0.0)
@@ -129,15 +130,15 @@ static void diffusion_beside_the_shifting_is_the_diffusion_pass(solver *s, bool 
     step_diffusion diffusion = {.mass = mass, .dt = s->dt};
     tank_frame frame = solver_frame(s, s->t);
     assert_false(frame.rotating);
-    fields_frozen_terms(&s->pp, p, &rows, &frame, &diffusion, DIFFUSION_ROWS_ALL);
+    step_fields_frozen_terms(&s->pp, p, &rows, &frame, &diffusion, DIFFUSION_ROWS_ALL);
     assert_memory_equal(p->diff_rho, rho, n * sizeof *rho);
     assert_memory_equal(p->diff_m, m, n * sizeof *m);
     /* the rotating frame's split, from zero */
     memset(p->diff_rho, 0, n * sizeof *rho);
     memset(p->diff_m, 0, n * sizeof *m);
-    fields_shifting_and_correction(&s->pp, p, &rows, false, false, &diffusion,
-                                   DIFFUSION_ROWS_OFF_WALLS);
-    fields_frozen_terms(&s->pp, p, &rows, &frame, &diffusion, DIFFUSION_ROWS_AT_WALLS);
+    step_fields_shifting_and_correction(&s->pp, p, &rows, false, false, &diffusion,
+                                        DIFFUSION_ROWS_OFF_WALLS);
+    step_fields_frozen_terms(&s->pp, p, &rows, &frame, &diffusion, DIFFUSION_ROWS_AT_WALLS);
     assert_memory_equal(p->diff_rho, rho, n * sizeof *rho);
     assert_memory_equal(p->diff_m, m, n * sizeof *m);
     free(rho);
@@ -216,7 +217,7 @@ static void test_surface_unpacking(void **state)
     for (size_t i = 0; i < p->n_total; i++)
         for (int d = 0; d < DIM; d++) p->u[d][i] = 0.0;
     neighbour_list rows = neighbours_near(&s.nl);
-    fields_shifting_and_correction(&s.pp, p, &rows, true, false, NULL, DIFFUSION_ROWS_NONE);
+    step_fields_shifting_and_correction(&s.pp, p, &rows, true, false, NULL, DIFFUSION_ROWS_NONE);
     size_t packed = 0;
     for (size_t i = 0; i < p->n_fluid; i++) {
         if (p->surface[i] != SURFACE_FREE || p->lambda[i] < SHIFTING_LAMBDA_MIN) continue;

@@ -1,4 +1,4 @@
-/* EdBC, Eq. (9) (src/scheme/control.c): on a tank's lattice with three particles set by hand,
+/* EdBC, Eq. (9) (src/scheme/edbc.c): on a tank's lattice with three particles set by hand,
  * a particle of S_F with lambda < 0.1 (a drop or a thin jet) gets p = 0 and rho = rho0, its
  * volume m / rho0, exactly; a particle of S_F at lambda = 0.1 and an interior particle at a
  * small lambda keep their values. model.edbc = true acts always, false never, with-eta0 only in
@@ -7,7 +7,7 @@
  * it carries the reset state: the pass driver refreshes the images after the passes that change
  * their sources. */
 #include "diag/freesurface.h"
-#include "scheme/control.h"
+#include "scheme/edbc.h"
 #include "boundary/tank.h"
 #include "scheme/solver.h"
 
@@ -77,8 +77,8 @@ static long edbc_on_three(edbc_mode edbc, bool eta0_regime)
     set_particle(p, 2, SURFACE_INTERIOR, 0.05, rho0);      /* interior: kept */
     state_of before[3];
     for (size_t i = 0; i < 3; i++) before[i] = read_state(p, i);
-    control_edbc(&s);
-    bool acts = control_edbc_acts(&s);
+    edbc_correct(&s);
+    bool acts = edbc_acts(&s);
     state_of drop = read_state(p, 0);
     if (acts) {
         assert_true(drop.rho == rho0);

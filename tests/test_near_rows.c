@@ -7,7 +7,7 @@
 #include "core/lanes_switch.h"
 #include "diag/freesurface.h"
 #include "diag/volume.h"
-#include "scheme/fields.h"
+#include "scheme/step_fields.h"
 #include "scheme/passes.h"
 #include "scheme/rhs.h"
 #include "scheme/solver.h"
@@ -39,11 +39,12 @@ static void run_passes(solver *s, const neighbour_list *nl, double *out)
     particles *p = &s->p;
     size_t n = p->n_fluid;
     tank_frame frame = solver_frame(s, s->t);
-    fields_geometry(&s->pp, &s->tank, p, nl);
+    step_fields_geometry(&s->pp, &s->tank, p, nl);
     freesurface_test(&s->pp.k, s->pp.dr, s->pp.normal_reference, p, nl); /* normalises */
     step_diffusion diffusion = {.mass = false, .dt = s->dt};
-    fields_shifting_and_correction(&s->pp, p, nl, true, true, &diffusion, DIFFUSION_ROWS_OFF_WALLS);
-    fields_frozen_terms(&s->pp, p, nl, &frame, &diffusion, DIFFUSION_ROWS_AT_WALLS);
+    step_fields_shifting_and_correction(&s->pp, p, nl, true, true, &diffusion,
+                                        DIFFUSION_ROWS_OFF_WALLS);
+    step_fields_frozen_terms(&s->pp, p, nl, &frame, &diffusion, DIFFUSION_ROWS_AT_WALLS);
     double *next = out;
 /* element by element: some fields are single precision (core/particles.h: frozen_real) */
 #define COPY_SCALAR(name)                                                                          \

@@ -12,7 +12,7 @@
 #include "io/csv.h"
 #include "io/image.h"
 #include "io/snapshot.h"
-#include "scheme/control.h"
+#include "scheme/edbc.h"
 #include "scheme/loads.h"
 #include "scheme/solver.h"
 
@@ -191,7 +191,7 @@ void run_write_series_row(run *r, int with_geometry)
     csv_put(c, dg.vol_sph / r->v0 - 1.0);
     csv_put(c, dg.mass / r->mass0 - 1.0);
     csv_put(c, s->eta_control.eta);
-    csv_put_long(c, control_edbc_acts(s));
+    csv_put_long(c, edbc_acts(s));
     csv_put_long(c, s->n_edbc);
     if (with_geometry)
         csv_put_long(c, ve.n_free_surface);

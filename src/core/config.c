@@ -1,10 +1,10 @@
 /* config: the case file's vocabulary (docs/case-file.md): its sections and keys, the defaults
  * that depend on other keys and the checks of the whole case (the list-valued keys' readers:
  * core/config_lists.c). The INI engine that reads it, checks each value and writes it back is
- * io/ini_schema.c. */
+ * core/ini_schema.c. */
 #include "core/config.h"
 #include "core/config_lists.h"
-#include "io/ini_schema.h"
+#include "core/ini_schema.h"
 
 #include <float.h>
 #include <limits.h>

@@ -5,7 +5,7 @@
 #define VCSPH_CONFIG_LISTS_H
 
 #include "core/config.h"
-#include "io/ini_schema.h"
+#include "core/ini_schema.h"
 
 #include <stdbool.h>
 #include <stddef.h>

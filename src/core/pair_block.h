@@ -102,7 +102,7 @@ PAIR_BLOCK_INLINE double block_total(pair_block s)
 
 /* The block sums of L = sum r_ji (x) r_ji F V_j (Eq. 10; its upper triangle, L being
  * symmetric) and of sum r_ji F V_j = sum grad_i W_ij V_j over a row: the geometry pass's
- * (scheme/fields.c) and surface tension's interface (scheme/surface_tension.c). */
+ * (scheme/step_fields.c) and surface tension's interface (scheme/surface_tension.c). */
 typedef struct {
     pair_block l[DIM][DIM], grad_one[DIM];
 } pair_block_moments;

@@ -43,6 +43,9 @@ enum {
  * run-time volume measures stay in double (docs/performance.md: how far eps_V1 moved). */
 typedef float frozen_real;
 
+/* The values of the field `surface` (Marrone et al. 2010; diag/freesurface.h writes it) */
+enum { SURFACE_INTERIOR = 0, SURFACE_REGION = 1, SURFACE_FREE = 2 };
+
 #define PARTICLE_FIELDS(SCALAR, VECTOR)                                                            \
     /* state of every particle (ghosts: mirrored from their source each RK stage) */               \
     SCALAR(int64_t, id, FIELD_STATE | FIELD_SOURCES_ONLY, "id", "global id of the fluid particle") \

@@ -8,8 +8,6 @@
 #include "core/particles.h"
 #include "core/vec.h"
 
-enum { SURFACE_INTERIOR = 0, SURFACE_REGION = 1, SURFACE_FREE = 2 };
-
 #define FREESURFACE_LAMBDA_FREE     0.2  /* lambda <= this: free surface (theory §4) */
 #define FREESURFACE_LAMBDA_INTERIOR 0.75 /* lambda > this: interior */
 /* Scan radius of the umbrella test in units of dr: Marrone et al. used the kernel's h at

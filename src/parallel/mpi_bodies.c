@@ -1,6 +1,5 @@
 /* mpi_bodies: the bodies of liquid of a run split by slabs (bodies.h's bodies_domain). */
 #include "parallel/mpi_bodies.h"
-#include "diag/freesurface.h"
 #include "parallel/mpi_reduce.h"
 
 #include <stdbool.h>

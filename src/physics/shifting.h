@@ -7,6 +7,9 @@
 
 #define SHIFTING_R 0.2 /* R of Eq. (7) */
 
+/* Lambda below which a particle gets no shifting (theory §4). */
+#define SHIFTING_LAMBDA_MIN 0.4
+
 /* [1 + R (W_ij / W(dr))^4] grad_i W_ij V_j: summed over j and multiplied by -xi h U_max it
  * is du*_i; the anti-clustering R term pushes harder on near neighbours. */
 static inline vec shifting_pair(double w_ij, double w_dr, vec r_ji, double f_ij, double vol_j)
@@ -25,6 +28,13 @@ static inline vec shifting_pair(double w_ij, double w_dr, vec r_ji, double f_ij,
  * round-off in a tank at rest (docs/volume-correction.md, "A liquid at rest"). vcsph's
  * addition to Eq. (7). A disorder of 1 % of dr has a gradient 1e-2 / dr, one to two orders of
  * magnitude above the floor g / c0^2 of a tank at rest. */
+/* The floor: |grad rho| / rho (1/m) of a particle, from the step's renormalised density
+ * gradient. */
+static inline double compression_gradient(vec grad_rho, double rho)
+{
+    return vec_norm(grad_rho) / rho;
+}
+
 static inline vec gradient_beyond_floor(vec s, double floor)
 {
     double norm = vec_norm(s);

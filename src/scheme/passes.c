@@ -5,8 +5,8 @@
 #include "scheme/passes.h"
 #include "diag/freesurface.h"
 #include "diag/volume.h"
-#include "scheme/control.h"
-#include "scheme/fields.h"
+#include "scheme/edbc.h"
+#include "scheme/step_fields.h"
 #include "scheme/volume_correction.h"
 
 #include <stdint.h>
@@ -30,7 +30,7 @@ typedef struct {
 static long geometry(solver *s, const tank_frame *frame, const neighbour_list *rows)
 {
     (void)frame;
-    fields_geometry(&s->pp, &s->tank, &s->p, rows);
+    step_fields_geometry(&s->pp, &s->tank, &s->p, rows);
     return 0;
 }
 
@@ -64,7 +64,7 @@ static long eta_control(solver *s, const tank_frame *frame, const neighbour_list
 static long edbc(solver *s, const tank_frame *frame, const neighbour_list *rows)
 {
     (void)frame, (void)rows;
-    control_edbc(s);
+    edbc_correct(s);
     return s->n_edbc;
 }
 
@@ -86,7 +86,7 @@ static bool corrects(const solver *s) { return s->pp.volume_correction; }
 
 static bool shifts_or_corrects(const solver *s) { return s->pp.shifting || corrects(s); }
 
-/* The step's density (and mass) diffusion, or NULL (fields.h) */
+/* The step's density (and mass) diffusion, or NULL (step_fields.h) */
 static const step_diffusion *diffusion_of(const solver *s, step_diffusion *d)
 {
     if (s->pp.c_delta <= 0.0) return NULL;
@@ -114,8 +114,8 @@ static long shifting_and_correction(solver *s, const tank_frame *frame, const ne
     diffusion_rows beside = diffused_beside_shifting(frame);
     if (diffusion && beside == DIFFUSION_ROWS_ALL)
         tank_mirror_diffusion_fields(&s->p, frame, s->pp.c0);
-    fields_shifting_and_correction(&s->pp, &s->p, rows, s->pp.shifting, corrects(s), diffusion,
-                                   beside);
+    step_fields_shifting_and_correction(&s->pp, &s->p, rows, s->pp.shifting, corrects(s), diffusion,
+                                        beside);
     return 0;
 }
 
@@ -152,8 +152,8 @@ static long frozen_terms(solver *s, const tank_frame *frame, const neighbour_lis
     diffusion_rows rest = diffused_beside_shifting(frame) == DIFFUSION_ROWS_ALL
                               ? DIFFUSION_ROWS_NONE
                               : DIFFUSION_ROWS_AT_WALLS;
-    fields_frozen_terms(&s->pp, &s->p, rows, frame, diffusion_of(s, &d),
-                        shifts_or_corrects(s) ? rest : DIFFUSION_ROWS_ALL);
+    step_fields_frozen_terms(&s->pp, &s->p, rows, frame, diffusion_of(s, &d),
+                             shifts_or_corrects(s) ? rest : DIFFUSION_ROWS_ALL);
     return 0;
 }
 

@@ -102,10 +102,10 @@ PAIR_BLOCK_FORMS(interface_sums, interface_row_sums,
 /* In S_F, from the current positions: delta_Sigma = 2 |sum grad W V| / flat_integral
  * (theory §4: the factor 2 because the gas half of the kernel is missing; the calibration
  * makes its integral across a flat lattice surface exactly 1) and the normal
- * -L^-1 sum grad W V, as fields_geometry computes it at the start of the step. Both are
+ * -L^-1 sum grad W V, as step_fields_geometry computes it at the start of the step. Both are
  * taken again at every stage: a force that stays where the surface was while the particles
  * move pumps energy into the surface's short waves (docs/surface-tension.md). 0 in the
- * interior. The row's sums in blocks, as the geometry pass's (scheme/fields.c). */
+ * interior. The row's sums in blocks, as the geometry pass's (scheme/step_fields.c). */
 static void interface_and_normals(const surface_tension_params *st, const kernel *k, particles *p,
                                   const neighbour_list *nl, surface_tension_work *w,
                                   double *const normal[DIM])

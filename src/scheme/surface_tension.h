@@ -73,10 +73,10 @@ void surface_tension_free(surface_tension_work *w);
 
 /* Fills p->interface (delta_Sigma, 1/m, normalised so that it integrates to 1 across a flat
  * lattice surface), p->curvature and p->st_force (the force on each fluid particle, N) from
- * the current positions, with the step's S_F (fields_geometry) and bodies (bodies_find); a wall's
- * image reads its source's interface function (particle_source_scalar); w holds room for the fluid
- * and the halo (surface_tension_reserve). On every body of liquid that touches no wall, the force
- * and its moment sum to zero exactly, as the continuum's do: each such body gets its discrete
+ * the current positions, with the step's S_F (step_fields_geometry) and bodies (bodies_find); a
+ * wall's image reads its source's interface function (particle_source_scalar); w holds room for the
+ * fluid and the halo (surface_tension_reserve). On every body of liquid that touches no wall, the
+ * force and its moment sum to zero exactly, as the continuum's do: each such body gets its discrete
  * residuals removed, so that its momentum and angular momentum are conserved. Across processes
  * through d (the halo's work arrays, the bodies' sums; NULL: one process). */
 void surface_tension_compute(const surface_tension_params *st, const kernel *k, particles *p,

@@ -5,7 +5,6 @@
 #include "diag/freesurface.h"
 #include "physics/shifting.h"
 #include "physics/volume_correction.h"
-#include "scheme/fields.h"
 #include "core/pair.h"
 
 #include <math.h>
@@ -48,7 +47,7 @@ vec volume_correction_velocity_from(const physics_params *pp, const particles *p
 {
     /* beyond the compression gradient's floor, as the shifting (shifting.h), and at most
        U_max / 2, Eq. (7)'s cap (no relative-speed bound here) */
-    sum = gradient_beyond_floor(sum, fields_compression_gradient(p, i));
+    sum = gradient_beyond_floor(sum, compression_gradient(vec_load(p->grad_rho, i), p->rho[i]));
     return shifting_limit(vec_scale(sum, -pp->k.h * pp->shift_u_max), INFINITY, pp->shift_u_max);
 }
 

@@ -47,7 +47,8 @@ void volume_correction_band(const physics_params *pp, particles *p, const neighb
 void volume_correction_ghost_mismatch(particles *p);
 /* dv of fluid particle i, for lambda >= 0.4 (below, the pass sets 0 without a row), from its
  * sum over its row of sum_j (e_j - e_i) grad_i W_ij V_j (volume_correction_pair), which the
- * pass sums beside the shifting over the same row (fields_shifting_and_correction, fields.h). */
+ * pass sums beside the shifting over the same row (step_fields_shifting_and_correction,
+ * step_fields.h). */
 vec volume_correction_velocity_from(const physics_params *pp, const particles *p, size_t i,
                                     vec sum);
 int volume_correction_per_body(particles *p, const bodies *b, const bodies_domain *d,

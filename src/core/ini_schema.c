@@ -1,7 +1,7 @@
 /* ini_schema: typed INI keys read into a struct with inih (ini_schema.h). */
-#include "io/ini_schema.h"
+#include "core/ini_schema.h"
 #include "core/suggest.h"
-#include "io/ini_value.h"
+#include "core/ini_value.h"
 
 #include <ctype.h>
 #include <errno.h>

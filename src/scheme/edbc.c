@@ -1,19 +1,19 @@
-/* control: EdBC, Eq. (9); the eta of the step is set by eta_control. */
-#include "scheme/control.h"
+/* edbc: EdBC, Eq. (9); the eta of the step is set by eta_control. */
+#include "scheme/edbc.h"
 #include "core/reduce.h"
 #include "diag/freesurface.h"
 #include "physics/eos.h"
 
-int control_edbc_acts(const solver *s)
+int edbc_acts(const solver *s)
 {
     edbc_mode edbc = s->cfg->edbc;
     return edbc == EDBC_ON || (edbc == EDBC_WITH_ETA0 && s->eta_control.eta0_regime);
 }
 
-void control_edbc(solver *s)
+void edbc_correct(solver *s)
 {
     s->n_edbc = 0;
-    if (!control_edbc_acts(s)) return;
+    if (!edbc_acts(s)) return;
     particles *p = &s->p;
     double rho0 = s->pp.rho0;
     long n = 0;

@@ -1,6 +1,6 @@
-/* fields: per-step geometry, the shifting and correction velocities and the frozen diffusion
+/* step_fields: per-step geometry, the shifting and correction velocities and the frozen diffusion
  * terms, each pass summing a row a block of entries at a time (core/pair_block.h). */
-#include "scheme/fields.h"
+#include "scheme/step_fields.h"
 #include "core/team_loop.h"
 #include "diag/freesurface.h"
 #include "physics/diffusion.h"
@@ -93,8 +93,8 @@ static inline double strain_norm(double g[DIM][DIM])
     return sqrt(2.0 * dd);
 }
 
-void fields_geometry(const physics_params *pp, const tank *t, particles *p,
-                     const neighbour_list *nl)
+void step_fields_geometry(const physics_params *pp, const tank *t, particles *p,
+                          const neighbour_list *nl)
 {
     const kernel *k = &pp->k;
     __auto_type sums_of = geometry_sums_form();
@@ -301,7 +301,8 @@ PAIR_BLOCK_FORMS(shift_row_sums, shift_row_sums_of,
 static vec shifting_velocity(const physics_params *pp, const particles *p, size_t i,
                              const shift_sums *s)
 {
-    vec sum = gradient_beyond_floor(s->shifting, fields_compression_gradient(p, i));
+    vec sum = gradient_beyond_floor(s->shifting,
+                                    compression_gradient(vec_load(p->grad_rho, i), p->rho[i]));
     double max_relative_speed = sqrt(s->max_relative2);
     vec du = vec_scale(sum, -pp->k.h * pp->shift_u_max);
     du = shifting_limit(du, max_relative_speed, pp->shift_u_max);
@@ -327,10 +328,10 @@ static void store_diffusion(particles *p, size_t i, const diffusion_sums *s, dou
  * rho, V, m: bounce-back, between this pass and the frozen terms, changes velocities only),
  * so it is summed here, over the shifting's row geometry. A row that reaches one needs the
  * wall images' density gradients and coefficients, which in a rotating frame follow the
- * bounced velocities (fields_frozen_terms then sums it). */
-void fields_shifting_and_correction(const physics_params *pp, particles *p,
-                                    const neighbour_list *nl, bool shift, bool correct,
-                                    const step_diffusion *diffusion, diffusion_rows rows)
+ * bounced velocities (step_fields_frozen_terms then sums it). */
+void step_fields_shifting_and_correction(const physics_params *pp, particles *p,
+                                         const neighbour_list *nl, bool shift, bool correct,
+                                         const step_diffusion *diffusion, diffusion_rows rows)
 {
     __auto_type sums_of = shift_row_sums_of_form();
     bool mass = diffusion && diffusion->mass;
@@ -386,9 +387,9 @@ static void diffuse_rows(const physics_params *pp, particles *p, const neighbour
     }
 }
 
-void fields_frozen_terms(const physics_params *pp, particles *p, const neighbour_list *nl,
-                         const tank_frame *frame, const step_diffusion *diffusion,
-                         diffusion_rows rows)
+void step_fields_frozen_terms(const physics_params *pp, particles *p, const neighbour_list *nl,
+                              const tank_frame *frame, const step_diffusion *diffusion,
+                              diffusion_rows rows)
 {
     tank_mirror_step_fields(p, frame, pp->c0);
     if (diffusion) {

@@ -1,33 +1,23 @@
-/* fields: the per-step fields frozen over the RK stages (sec. 2.4): the matrix L of Eq. (10)
+/* step_fields: the per-step fields frozen over the RK stages (sec. 2.4): the matrix L of Eq. (10)
  * and lambda, renormalized gradients, ||D||, eddy viscosity, the diffusion coefficient and
  * the density diffusion D^rho of Eq. (5). */
-#ifndef VCSPH_FIELDS_H
-#define VCSPH_FIELDS_H
+#ifndef VCSPH_STEP_FIELDS_H
+#define VCSPH_STEP_FIELDS_H
 
 #include "boundary/tank.h"
 #include "core/cells.h"
 #include "core/particles.h"
 #include "scheme/physics_params.h"
 
-#define fields_geometry                DIM_NAME(fields_geometry)
-#define fields_shifting_and_correction DIM_NAME(fields_shifting_and_correction)
-#define fields_frozen_terms            DIM_NAME(fields_frozen_terms)
-
-/* Lambda below which a particle gets no shifting (theory §4). */
-#define SHIFTING_LAMBDA_MIN 0.4
-
-/* |grad rho| / rho of fluid particle i (1/m), from the step's geometry: the floor below which
- * shifting and the volume correction see no disorder (gradient_beyond_floor, shifting.h). */
-static inline double fields_compression_gradient(const particles *p, size_t i)
-{
-    return vec_norm(vec_load(p->grad_rho, i)) / p->rho[i];
-}
+#define step_fields_geometry                DIM_NAME(step_fields_geometry)
+#define step_fields_shifting_and_correction DIM_NAME(step_fields_shifting_and_correction)
+#define step_fields_frozen_terms            DIM_NAME(step_fields_frozen_terms)
 
 /* The geometry of the step (needs the ghosts refreshed): L, lambda, the normal, sum W,
  * sum W V, the renormalized density and velocity gradients, nu_t, nu_delta (fluid); the free
  * surface and S_F follow from these (diag/freesurface.h). */
-void fields_geometry(const physics_params *pp, const tank *t, particles *p,
-                     const neighbour_list *nl);
+void step_fields_geometry(const physics_params *pp, const tank *t, particles *p,
+                          const neighbour_list *nl);
 
 /* The density diffusion D^rho and, with `mass` (variable masses), D^m of Eq. (5), frozen over
  * the step dt, which bounds each particle's D^rho so that the step is stable (diffusion.h).
@@ -56,19 +46,19 @@ static inline bool diffusion_rows_include(diffusion_rows rows, bool at_wall)
  * volume_correction.h, after its mismatch e), frozen over the RK stages (sec. 2.4), for the
  * fluid; computed after EdBC has corrected the densities, since the volumes weigh them. Both
  * sum over the same neighbours, so one pass computes each row's geometry once for the two,
- * and for the `diffusion` of the `rows` (fields_frozen_terms does the others): the rows that
+ * and for the `diffusion` of the `rows` (step_fields_frozen_terms does the others): the rows that
  * reach a wall image only once the images hold their diffusion fields
  * (tank_mirror_diffusion_fields). */
-void fields_shifting_and_correction(const physics_params *pp, particles *p,
-                                    const neighbour_list *nl, bool shift, bool correct,
-                                    const step_diffusion *diffusion, diffusion_rows rows);
+void step_fields_shifting_and_correction(const physics_params *pp, particles *p,
+                                         const neighbour_list *nl, bool shift, bool correct,
+                                         const step_diffusion *diffusion, diffusion_rows rows);
 
 /* The other terms frozen over the RK stages, after the shifting velocity and bounce-back:
  * the ghosts' copies of the per-step fields, then the `diffusion` of the `rows` (0 where
  * `diffusion` is NULL). `frame`: the tank frame at the step's start, whose body force the
  * ghosts' hydrostatic density gradient follows. */
-void fields_frozen_terms(const physics_params *pp, particles *p, const neighbour_list *nl,
-                         const tank_frame *frame, const step_diffusion *diffusion,
-                         diffusion_rows rows);
+void step_fields_frozen_terms(const physics_params *pp, particles *p, const neighbour_list *nl,
+                              const tank_frame *frame, const step_diffusion *diffusion,
+                              diffusion_rows rows);
 
 #endif

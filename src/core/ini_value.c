@@ -1,6 +1,6 @@
 /* ini_value: the values of the built-in key kinds, text to field and back, and the helpers of
  * the formats (ini_schema.h, ini_value.h). */
-#include "io/ini_value.h"
+#include "core/ini_value.h"
 #include "core/decimal.h"
 #include "core/suggest.h"
 
