@@ -41,7 +41,7 @@ test-long: deps
 # runs (label `long`, tests/CMakeLists.txt), whose code paths shorter tests take too and which
 # would add some 25 minutes under the sanitizers.
 sanitize: deps
-	cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DVCSPH_SANITIZE=ON -DVCSPH_WERROR=ON
+	cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DVCSPH_SANITIZE=ON -DVCSPH_CHECKS=ON -DVCSPH_WERROR=ON
 	cmake --build $(ASAN_BUILD) -j $(JOBS)
 	ctest --test-dir $(ASAN_BUILD) --output-on-failure -j $(JOBS) -LE long
 

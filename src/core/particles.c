@@ -158,3 +158,36 @@ void particles_permute_fluid(particles *p, const uint32_t *order, double *scratc
         for (int d = 0; d < DIM; d++) permute(p->name[d], order, n, scratch);
     PARTICLE_FIELDS(PERMUTE_SCALAR, PERMUTE_VECTOR)
 }
+
+/* FNV-1a over n bytes, continuing from h */
+static uint64_t bytes_hash(uint64_t h, const void *bytes, size_t n)
+{
+    const unsigned char *b = bytes;
+    for (size_t k = 0; k < n; k++) h = (h ^ b[k]) * UINT64_C(1099511628211);
+    return h;
+}
+
+void particles_field_hashes(const particles *p, size_t n, uint64_t hash[FIELD_BITS])
+{
+#define HELD(flags, a) (!((flags)&FIELD_GHOSTS_ONLY) && (a))
+#define HASH_SCALAR(type, name, flags, snapshot, comment)                                          \
+    hash[FIELD_BIT_##name] = HELD(flags, p->name) ? bytes_hash(UINT64_C(14695981039346656037),     \
+                                                               p->name, n * sizeof(type))          \
+                                                  : 0;
+#define HASH_VECTOR(type, name, flags, snapshot, comment)                                          \
+    hash[FIELD_BIT_##name] = 0;                                                                    \
+    for (int d = 0; d < DIM; d++)                                                                  \
+        if (HELD(flags, p->name[d]))                                                               \
+            hash[FIELD_BIT_##name] =                                                               \
+                bytes_hash(hash[FIELD_BIT_##name] ^ (uint64_t)d, p->name[d], n * sizeof(type));
+    PARTICLE_FIELDS(HASH_SCALAR, HASH_VECTOR)
+#undef HELD
+}
+
+const char *particles_field_name(int field)
+{
+    static const char *const names[FIELD_BITS] = {
+#define FIELD_NAME(type, name, flags, snapshot, comment) #name,
+        PARTICLE_FIELDS(FIELD_NAME, FIELD_NAME)};
+    return field >= 0 && field < FIELD_BITS ? names[field] : "?";
+}

@@ -233,6 +233,8 @@ static inline int particle_is_wall_image(const particles *p, size_t j)
 #define particles_permute_fluid      DIM_NAME(particles_permute_fluid)
 #define particles_bytes_per_slot     DIM_NAME(particles_bytes_per_slot)
 #define particles_field_copy         DIM_NAME(particles_field_copy)
+#define particles_field_hashes       DIM_NAME(particles_field_hashes)
+#define particles_field_name         DIM_NAME(particles_field_name)
 
 /* Allocates room for `capacity` particles (fluid + ghosts); all counts 0. Returns 0 or -1. */
 int particles_init(particles *p, size_t capacity);
@@ -266,6 +268,11 @@ int particles_reserve_ghosts(particles *p, size_t n_ghosts);
 size_t particles_bytes_per_slot(void);
 size_t particles_bytes_sources_only(void);
 size_t particles_bytes_ghosts_only(void);
+/* For the debug build's checks (core/invariant.h): a hash of the bytes of each field over the
+ * particles [0, n), per field bit (0 for the FIELD_GHOSTS_ONLY fields and a field not held),
+ * and a field's name. */
+void particles_field_hashes(const particles *p, size_t n, uint64_t hash[FIELD_BITS]);
+const char *particles_field_name(int field);
 /* Reorders the persistent fluid state (the fields marked FIELD_STATE: id, x, u, rho, m) so
  * that new slot k holds old particle order[k]; scratch needs n_fluid doubles. */
 void particles_permute_fluid(particles *p, const uint32_t *order, double *scratch);

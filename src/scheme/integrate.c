@@ -5,6 +5,7 @@
 #include "core/team_loop.h"
 #include "scheme/passes.h"
 #include "scheme/solver.h"
+#include "scheme/invariants.h"
 
 /* Eq. (8); dt_a from the largest acceleration of the previous step */
 static double time_step(const solver *s)
@@ -250,6 +251,7 @@ void solver_advance(solver *s, double t_stop)
 int solver_step(solver *s, double t_stop)
 {
     if (solver_prepare(s, t_stop)) return -1;
+    solver_check_invariants(s);
     solver_advance(s, t_stop);
     return 0;
 }

@@ -3,6 +3,7 @@
  * runs them in order and brings the wall ghosts up to date, in this one place, before a pass
  * that reads a field an earlier pass changed. */
 #include "scheme/passes.h"
+#include "core/invariant.h"
 #include "diag/freesurface.h"
 #include "diag/volume.h"
 #include "scheme/edbc.h"
@@ -10,6 +11,7 @@
 #include "scheme/volume_correction.h"
 
 #include <stdint.h>
+#include <stdio.h>
 
 #define F(name) FIELD_MASK(name)
 
@@ -221,6 +223,21 @@ static void refresh_for(solver *s, const tank_frame *frame, uint64_t reads, uint
     }
 }
 
+/* The debug build's check that a pass changed no field of the fluid it does not declare. */
+static void check_writes(const step_pass *pass, const particles *p,
+                         const uint64_t before[FIELD_BITS])
+{
+    uint64_t after[FIELD_BITS];
+    particles_field_hashes(p, p->n_fluid, after);
+    for (int f = 0; f < FIELD_BITS; f++)
+        if (after[f] != before[f] && !(pass->writes & (UINT64_C(1) << f))) {
+            char what[128];
+            snprintf(what, sizeof what, "it changed the field %s, which it does not declare",
+                     particles_field_name(f));
+            invariant_broken(pass->name, what);
+        }
+}
+
 int passes_prepare(solver *s, const tank_frame *frame)
 {
     s->eta_switched = 0;
@@ -232,7 +249,10 @@ int passes_prepare(solver *s, const tank_frame *frame)
         const step_pass *pass = &prepare_passes[k];
         if (pass->active && !pass->active(s)) continue;
         refresh_for(s, frame, pass->reads, &halo_stale, &ghost_stale);
+        uint64_t before[FIELD_BITS];
+        if (INVARIANTS_ON) particles_field_hashes(&s->p, s->p.n_fluid, before);
         long changed = pass->run(s, frame, &rows);
+        if (INVARIANTS_ON) check_writes(pass, &s->p, before);
         if (changed < 0) return -1;
         halo_stale |= pass->writes;
         if (changed > 0) ghost_stale |= pass->writes & GHOST_STATE;
