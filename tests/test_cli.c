@@ -52,6 +52,12 @@ static const bad_case bad_cases[] = {
      "[liquid]\nheight = 0.05\n[numerics]\nresolution = 8\n",
      {RUN_BAD, NULL},
      {"bad.ini:7:", "tank.lenght", "did you mean", "tank.length"}},
+    /* two swapped letters are one edit: "heigth" is nearer "height" than "length" */
+    {"swapped_letters_did_you_mean",
+     "[case]\nname = base\nt_end = 0.05\n[tank]\nlength = 0.2\nheigth = 0.1\n"
+     "[liquid]\nheight = 0.05\n[numerics]\nresolution = 8\n",
+     {RUN_BAD, NULL},
+     {"bad.ini:6:", "tank.heigth", "did you mean 'tank.height'"}},
     /* a missing key has no line of its own: the message points at its section's header */
     {"missing_required_key",
      "[case]\nname = base\nt_end = 0.05\n[tank]\nlength = 0.2\nheight = 0.1\n[liquid]\n"

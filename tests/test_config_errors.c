@@ -77,7 +77,7 @@ static const bad_case bad_cases[] = {
         "bad.ini:3: ", "tank.height", "missing", "required"),
     BAD("missing section",
         "[case]\nt_end = 1.0\n[tank]\nlength = 1.0\nheight = 0.5\n[liquid]\nheight = 0.2\n",
-        "bad.ini:0: ", "numerics.resolution", "missing", "required"),
+        "bad.ini: ", "numerics.resolution", "missing", "required"),
     BAD("bad number", "[case]\nt_end = 1\n[tank]\nlength = 1.0abc\n",
         "bad.ini:4: ", "tank.length = 1.0abc", "not a finite decimal number", "> 0 (m)"),
     BAD("empty number", "[case]\nt_end =\n",

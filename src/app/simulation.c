@@ -294,9 +294,9 @@ static void log_start(const run *r)
     const config *cfg = r->cfg;
     const derived *dv = &r->s.dv;
     log_info("vcsph %s: %s, %dD, %s, %ld particles, dr = %.4g m, c0 = %.4g m/s, t_end = %g s, "
-             "%d threads",
+             "%d thread%s",
              vcsph_version(), cfg->name, DIM, config_scheme_name(cfg->scheme), dv->n_fluid, dv->dr,
-             dv->c0, cfg->t_end, omp_get_max_threads());
+             dv->c0, cfg->t_end, omp_get_max_threads(), omp_get_max_threads() == 1 ? "" : "s");
     /* the warnings and estimates of `vcsph check` (core/derived.c, scheme/estimate.c) */
     derived_warnings(cfg, dv, log_warning, NULL);
     run_estimate est;

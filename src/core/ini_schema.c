@@ -54,6 +54,7 @@ PRINTF_LIKE(2, 3) static void fail(ini_session *ctx, const char *fmt, ...)
 static const char *where(const ini_session *ctx, int line, char *buf, size_t size)
 {
     if (line == INI_LINE_SET) return "--set";
+    if (line <= 0) return ctx->origin; /* what the file lacks has no line */
     snprintf(buf, size, "%s:%d", ctx->origin, line);
     return buf;
 }

@@ -5,23 +5,33 @@
 #include <limits.h>
 #include <string.h>
 
-/* Case-insensitive Levenshtein distance; long strings are never close. */
+static int same_letter(char a, char b)
+{
+    return tolower((unsigned char)a) == tolower((unsigned char)b);
+}
+
+/* Case-insensitive edit distance counting a swap of two neighbouring letters as one edit (the
+ * optimal string alignment distance: "heigth" is 1 from "height", 2 from "length"); long
+ * strings are never close. */
 static int edit_distance(const char *a, const char *b)
 {
     enum { CAP = 64 };
     size_t la = strlen(a), lb = strlen(b);
     if (la >= CAP || lb >= CAP) return INT_MAX;
-    int prev[CAP], cur[CAP];
+    int before[CAP], prev[CAP], cur[CAP];
     for (size_t j = 0; j <= lb; j++) prev[j] = (int)j;
     for (size_t i = 1; i <= la; i++) {
         cur[0] = (int)i;
         for (size_t j = 1; j <= lb; j++) {
-            int same = tolower((unsigned char)a[i - 1]) == tolower((unsigned char)b[j - 1]);
-            int best = prev[j - 1] + !same;
+            int best = prev[j - 1] + !same_letter(a[i - 1], b[j - 1]);
             if (prev[j] + 1 < best) best = prev[j] + 1;
             if (cur[j - 1] + 1 < best) best = cur[j - 1] + 1;
+            if (i > 1 && j > 1 && same_letter(a[i - 1], b[j - 2]) &&
+                same_letter(a[i - 2], b[j - 1]) && before[j - 2] + 1 < best)
+                best = before[j - 2] + 1;
             cur[j] = best;
         }
+        memcpy(before, prev, sizeof before);
         memcpy(prev, cur, sizeof prev);
     }
     return prev[lb];
