@@ -227,6 +227,11 @@ static void test_help_names_every_plot(void **state)
                                         "dissipation",          "probes", "loads"};
     for (size_t k = 0; k < sizeof words / sizeof words[0]; k++) assert_contains(out, words[k]);
     free(out);
+    /* after a command too, as a user types it */
+    assert_int_equal(run_vcsph(fx, (const char *const[]){"run", "--help", NULL}), 0);
+    out = read_file(fx, "stdout.txt");
+    assert_contains(out, "--restart");
+    free(out);
 }
 
 int main(void)

@@ -117,6 +117,12 @@ int cli_parse(int argc, char **argv, cli_args *args, char *err, int err_len)
         args->command = CLI_HELP;
         return 0;
     }
+    /* `vcsph run --help` and the like: the help, whatever else the line holds */
+    for (int k = 2; k < argc; k++)
+        if (!strcmp(argv[k], "--help") || !strcmp(argv[k], "-h")) {
+            args->command = CLI_HELP;
+            return 0;
+        }
     if (!strcmp(cmd, "--version")) {
         args->command = CLI_VERSION;
         return 0;
