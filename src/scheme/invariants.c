@@ -61,7 +61,7 @@ int solver_invariants_broken(const solver *s, double mass_reference, char *what,
     for (size_t i = 0; i < p->n_fluid; i++)
         if (particle_broken(s, i, what, size)) return 1;
     if (s->nl.n_rows > 0) {
-        int32_t *entries = malloc((size_t)NEIGHBOUR_ROW_MAX * sizeof *entries);
+        int32_t *entries = malloc((s->nl.row_capacity + 1) * sizeof *entries);
         if (!entries) {
             snprintf(what, size, "out of memory");
             return 1;

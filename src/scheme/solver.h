@@ -60,19 +60,18 @@ typedef struct solver {
 
     /* RK4 work arrays over the fluid; the masses' (y0[RK_MASS], sum[RK_MASS], k.dm) only from
        the first step with variable masses on (solver_masses_vary), NULL before */
-    double *y0[RK_VARS];   /* state at the start of the step */
-    double *sum[RK_VARS];  /* weighted sum of the stage rates */
-    double *rk_block;      /* y0[v] and sum[v] for v < RK_MASS, in one block of 2 RK_MASS
-                              work_capacity doubles: between steps it holds nothing, and the
-                              neighbour build borrows it for its copy of the positions */
-    rates k;               /* rates of the current stage */
-    double mass_reference; /* the debug build's: the total mass at its first check (invariants.h) */
-    double *scratch;       /* n_fluid doubles */
-    uint32_t *order;       /* n_fluid sort permutation (32-bit, as the cell grid's items), used
-                              only between steps: it lies in rk_block */
-    size_t work_capacity;  /* the fluid particles these arrays hold room for */
-    size_t rate_capacity;  /* k.du and k.drho: work_capacity, or the fluid and the halo when
-                              lent to surface tension (solver_surface_tension_room) */
+    double *y0[RK_VARS];  /* state at the start of the step */
+    double *sum[RK_VARS]; /* weighted sum of the stage rates */
+    double *rk_block;     /* y0[v] and sum[v] for v < RK_MASS, in one block of 2 RK_MASS
+                             work_capacity doubles: between steps it holds nothing, and the
+                             neighbour build borrows it for its copy of the positions */
+    rates k;              /* rates of the current stage */
+    double *scratch;      /* n_fluid doubles */
+    uint32_t *order;      /* n_fluid sort permutation (32-bit, as the cell grid's items), used
+                             only between steps: it lies in rk_block */
+    size_t work_capacity; /* the fluid particles these arrays hold room for */
+    size_t rate_capacity; /* k.du and k.drho: work_capacity, or the fluid and the halo when
+                             lent to surface tension (solver_surface_tension_room) */
 
     double t, dt;   /* time; size of the prepared step */
     double last_dt; /* size of the step that ended at t */
@@ -93,6 +92,7 @@ typedef struct solver {
     int eta_switched;               /* the last solver_prepare switched eta ... */
     char eta_switch_detail[160];    /* ... and how */
     const solver_domain *domain;    /* the processes' split (MPI), or NULL: one process */
+    double mass_reference;          /* the debug build's total mass at its first check */
 } solver;
 
 /* Whether the masses vary in this step (rhs_masses_vary at the step's eta). */
